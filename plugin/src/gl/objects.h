@@ -1,0 +1,142 @@
+// Move-only RAII wrappers for the GL objects taa uses. Each holds the Functions table of the
+// context that made it and must be destroyed while that context is current.
+#pragma once
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "gl/gl_functions.h"
+
+namespace taa::gl {
+
+// Shared move-only handle logic: owns one GL name and deletes it with the given deleter.
+template <typename Deleter>
+class Handle {
+ public:
+  Handle() = default;
+  Handle(const Functions* gl, GLuint id) : gl_(gl), id_(id) {}
+  ~Handle() { reset(); }
+  Handle(Handle&& other) noexcept : gl_(other.gl_), id_(std::exchange(other.id_, 0)) {}
+  Handle& operator=(Handle&& other) noexcept {
+    if (this != &other) {
+      reset();
+      gl_ = other.gl_;
+      id_ = std::exchange(other.id_, 0);
+    }
+    return *this;
+  }
+  Handle(const Handle&) = delete;
+  Handle& operator=(const Handle&) = delete;
+
+  GLuint id() const { return id_; }
+  const Functions& gl() const { return *gl_; }
+  explicit operator bool() const { return id_ != 0; }
+
+ private:
+  void reset() {
+    if (id_ != 0) Deleter{}(*gl_, id_);
+    id_ = 0;
+  }
+  const Functions* gl_ = nullptr;
+  GLuint id_ = 0;
+};
+
+struct TextureDeleter {
+  void operator()(const Functions& gl, GLuint id) const { gl.DeleteTextures(1, &id); }
+};
+struct FramebufferDeleter {
+  void operator()(const Functions& gl, GLuint id) const { gl.DeleteFramebuffers(1, &id); }
+};
+struct ProgramDeleter {
+  void operator()(const Functions& gl, GLuint id) const { gl.DeleteProgram(id); }
+};
+struct VertexArrayDeleter {
+  void operator()(const Functions& gl, GLuint id) const { gl.DeleteVertexArrays(1, &id); }
+};
+
+// A 2D texture with nearest or linear filtering and clamp-to-edge wrapping.
+// Pixel rows are uploaded in memory order: row 0 is texel row 0 (raster j = 0, the top row
+// in taa's convention), so gl_FragCoord.y and texture v both count raster rows from the top.
+class Texture {
+ public:
+  enum class Filter { Nearest, Linear };
+
+  Texture() = default;
+  // internalFormat e.g. GL_RGBA32F, GL_R32F, GL_RG32F, GL_RGBA16F.
+  Texture(const Functions& gl, int width, int height, GLenum internalFormat,
+          Filter filter = Filter::Nearest);
+
+  // Uploads width*height pixels of `components` floats each (1, 2, 3 or 4), tightly packed.
+  void upload(const float* pixels, int components);
+  void bind(int unit) const;
+
+  GLuint id() const { return handle_.id(); }
+  int width() const { return width_; }
+  int height() const { return height_; }
+
+ private:
+  Handle<TextureDeleter> handle_;
+  int width_ = 0, height_ = 0;
+};
+
+// A framebuffer object with one colour attachment. Throws taa::Error if incomplete.
+class Framebuffer {
+ public:
+  Framebuffer() = default;
+  Framebuffer(const Functions& gl, const Texture& colorAttachment);
+
+  // Binds for drawing and sets the viewport to the attachment's size.
+  void bind() const;
+  // Reads the attachment back as tightly packed RGBA floats, row 0 first.
+  std::vector<float> readRGBA() const;
+
+  GLuint id() const { return handle_.id(); }
+
+ private:
+  Handle<FramebufferDeleter> handle_;
+  int width_ = 0, height_ = 0;
+};
+
+// A linked vertex + fragment program built from shaders embedded from glsl/.
+class Program {
+ public:
+  Program() = default;
+  // vertexShader / fragmentShader are names of embedded files (e.g. "fullscreen.vert");
+  // `defines` lines ("#define NAME VALUE") go right after the #version line.
+  // A compile or link failure throws taa::Error with the driver's log and the shader name.
+  Program(const Functions& gl, const std::string& vertexShader, const std::string& fragmentShader,
+          const std::vector<std::string>& defines = {});
+
+  void use() const;
+  // Uniform setters: a name the linker removed (unused) is silently ignored, as GL does.
+  void set(const char* name, int value) const;
+  void set(const char* name, float value) const;
+  void set(const char* name, float x, float y) const;
+  void set(const char* name, float x, float y, float z, float w) const;
+  void setMatrix4(const char* name, const float* columnMajor16) const;
+
+  GLuint id() const { return handle_.id(); }
+
+ private:
+  GLint location(const char* name) const;
+  Handle<ProgramDeleter> handle_;
+};
+
+// Draws one triangle covering the viewport; the vertex shader "fullscreen.vert" derives the
+// positions from gl_VertexID, so no vertex buffer is needed (only the VAO core profile requires).
+class FullscreenTriangle {
+ public:
+  FullscreenTriangle() = default;
+  explicit FullscreenTriangle(const Functions& gl);
+  void draw() const;
+
+ private:
+  Handle<VertexArrayDeleter> vao_;
+};
+
+// Throws taa::Error naming `what` if glGetError reports an error (checks cost little here:
+// one per pass, not per pixel).
+void checkError(const Functions& gl, const char* what);
+
+}  // namespace taa::gl
