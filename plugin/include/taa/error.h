@@ -13,9 +13,9 @@
 TAA_NAMESPACE_BEGIN
 
 struct ErrorContext {
-  std::string file;          // path of the file involved, empty if none
-  std::optional<int> frame;  // frame number involved, if any
-  std::string channel;       // channel (or AOV) involved, empty if none
+  std::string file{};        // path of the file involved, empty if none
+  std::optional<int> frame{};  // frame number involved, if any
+  std::string channel{};     // channel (or AOV) involved, empty if none
 };
 
 class TAA_API Error : public std::runtime_error {

@@ -1,1 +1,252 @@
-// placeholder: being written
+#include "cli/cli_options.h"
+
+#include <cmath>
+#include <functional>
+#include <map>
+
+#include "io/sequence_pattern.h"
+#include "io/sequence_scan.h"
+#include "taa/error.h"
+
+namespace taa::cli {
+namespace {
+
+float parseFloat(const std::string& option, const std::string& text) {
+  std::size_t used = 0;
+  float value = 0.0f;
+  try {
+    value = std::stof(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used != text.size() || !std::isfinite(value)) {
+    throw Error(option + " expects a number, got \"" + text + "\"");
+  }
+  return value;
+}
+
+int parseInt(const std::string& option, const std::string& text) {
+  std::size_t used = 0;
+  int value = 0;
+  try {
+    value = std::stoi(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used != text.size()) throw Error(option + " expects an integer, got \"" + text + "\"");
+  return value;
+}
+
+std::string choice(const std::string& option, const std::string& text,
+                   const std::vector<std::string>& choices) {
+  for (const auto& c : choices) {
+    if (text == c) return text;
+  }
+  std::string list;
+  for (const auto& c : choices) list += (list.empty() ? "" : ", ") + c;
+  throw Error(option + " expects one of " + list + ", got \"" + text + "\"");
+}
+
+// Channel and file choices for depth/motion, applied after all options are read so that
+// their order on the command line does not matter.
+struct AovArgs {
+  std::optional<std::string> pattern, channels;
+};
+
+}  // namespace
+
+CommandLine parseCommandLine(const std::vector<std::string>& args) {
+  CommandLine cl;
+  io::AovLayout& layout = cl.job.layout;
+  std::string colorChannels = "R,G,B,A";
+  AovArgs depth, motion;
+  std::string preset, layer = "ViewLayer";
+  std::vector<std::string> positional;
+
+  using Handler = std::function<void(const std::string&)>;
+  const std::map<std::string, Handler> withValue = {
+      {"--frames", [&](const std::string& v) { cl.framesText = v; }},
+      {"--color", [&](const std::string& v) { positional.push_back(v); }},
+      {"--depth", [&](const std::string& v) { depth.pattern = v; }},
+      {"--motion", [&](const std::string& v) { motion.pattern = v; }},
+      {"--color-ch", [&](const std::string& v) { colorChannels = v; }},
+      {"--depth-ch", [&](const std::string& v) { depth.channels = v; }},
+      {"--motion-ch", [&](const std::string& v) { motion.channels = v; }},
+      {"--preset", [&](const std::string& v) { preset = choice("--preset", v, {"cycles"}); }},
+      {"--layer", [&](const std::string& v) { layer = v; }},
+      {"--motion-y",
+       [&](const std::string& v) {
+         layout.motionConvention.yUp = choice("--motion-y", v, {"up", "down"}) == "up";
+       }},
+      {"--motion-to",
+       [&](const std::string& v) {
+         layout.motionConvention.toPrevious =
+             choice("--motion-to", v, {"previous", "next"}) == "previous";
+       }},
+      {"--motion-scale",
+       [&](const std::string& v) { layout.motionConvention.scale = parseFloat("--motion-scale", v); }},
+      {"--depth-nohit",
+       [&](const std::string& v) {
+         layout.depthConvention.noHitAbove = parseFloat("--depth-nohit", v);
+       }},
+      {"--jitter",
+       [&](const std::string& v) {
+         cl.job.resolve.jitter.source = choice("--jitter", v, {"halton", "none"}) == "halton"
+                                            ? JitterSource::Halton
+                                            : JitterSource::None;
+       }},
+      {"--jitter-offset",
+       [&](const std::string& v) { cl.job.resolve.jitter.indexOffset = parseInt("--jitter-offset", v); }},
+      {"--jitter-period",
+       [&](const std::string& v) {
+         const int period = parseInt("--jitter-period", v);
+         if (period < 0) throw Error("--jitter-period must be 0 or more, got " + v);
+         cl.job.resolve.jitter.period = period;
+       }},
+      {"--blend",
+       [&](const std::string& v) {
+         const float blend = parseFloat("--blend", v);
+         if (!(blend > 0.0f && blend <= 1.0f)) throw Error("--blend must be in (0, 1], got " + v);
+         cl.job.resolve.blend = blend;
+       }},
+      {"-o", [&](const std::string& v) { cl.job.outputPattern = v; }},
+      {"-d", [&](const std::string& v) { cl.job.write.pixelType = io::parsePixelType(v); }},
+      {"--compression",
+       [&](const std::string& v) {
+         io::validateCompression(v);
+         cl.job.write.compression = v;
+       }},
+      {"--gl", [&](const std::string& v) { cl.job.backend = gl::parseBackend(v); }},
+  };
+  const std::map<std::string, std::function<void()>> flags = {
+      {"--help", [&] { cl.help = true; }},
+      {"-h", [&] { cl.help = true; }},
+      {"--info", [&] { cl.info = true; }},
+      {"-v", [&] { cl.verbosity = Verbosity::Verbose; }},
+      {"-q", [&] { cl.verbosity = Verbosity::Quiet; }},
+      {"--no-clip", [&] { cl.job.resolve.clipHistory = false; }},
+      {"--no-dilate", [&] { cl.job.resolve.dilateMotion = false; }},
+  };
+
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string& arg = args[i];
+    if (auto flag = flags.find(arg); flag != flags.end()) {
+      flag->second();
+    } else if (auto option = withValue.find(arg); option != withValue.end()) {
+      if (i + 1 >= args.size()) throw Error("option " + arg + " needs a value");
+      option->second(args[++i]);
+    } else if (arg.size() > 1 && arg[0] == '-') {
+      throw Error("unknown option " + arg + " (see taatool --help)");
+    } else {
+      positional.push_back(arg);
+    }
+  }
+  if (cl.help || cl.info) return cl;
+
+  if (positional.empty()) throw Error("no color input given (see taatool --help)");
+  if (positional.size() > 1) {
+    throw Error("more than one color input given: \"" + positional[0] + "\" and \"" +
+                positional[1] + "\"");
+  }
+
+  if (preset == "cycles") {
+    const io::AovLayout cycles = io::cyclesLayout(positional[0], layer);
+    layout.color = cycles.color;
+    layout.depth = cycles.depth;
+    layout.motion = cycles.motion;
+    layout.motionConvention = cycles.motionConvention;
+    layout.depthConvention = cycles.depthConvention;
+  } else {
+    layout.color = {positional[0], io::parseChannelList(colorChannels)};
+  }
+  // Explicit flags override the preset field by field.
+  auto applyAov = [](std::optional<io::AovSource>& aov, const AovArgs& given,
+                     const char* defaultChannels) {
+    if (!given.pattern && !given.channels) return;
+    if (!aov) aov = io::AovSource{"", io::parseChannelList(defaultChannels)};
+    if (given.pattern) aov->pattern = *given.pattern;
+    if (given.channels) aov->channels = io::parseChannelList(*given.channels);
+  };
+  applyAov(layout.depth, depth, "Z");
+  applyAov(layout.motion, motion, "X,Y");
+  if (layout.color.channels.size() < 3 || layout.color.channels.size() > 4) {
+    throw Error("--color-ch expects 3 or 4 channel names, got " + colorChannels);
+  }
+  if (layout.depth && layout.depth->channels.size() != 1) {
+    throw Error("--depth-ch expects 1 channel name");
+  }
+  if (layout.motion && layout.motion->channels.size() != 2) {
+    throw Error("--motion-ch expects 2 channel names (x, y)");
+  }
+  return cl;
+}
+
+void resolveFrameList(CommandLine& cl) {
+  const std::string& pattern = cl.job.layout.color.pattern;
+  if (!cl.framesText.empty()) {
+    cl.job.frames = io::parseFrameRange(cl.framesText);
+  } else if (io::hasFramePlaceholder(pattern)) {
+    cl.job.frames = io::scanExistingFrames(pattern);
+    if (cl.job.frames.empty()) throw Error("no frames found for the color pattern", {pattern});
+  } else {
+    cl.job.frames = {0};  // a single file: frame number 0 for jitter unless --frames says
+  }
+}
+
+std::string helpText() {
+  return R"help(taatool -- temporal anti-aliasing resolve for EXR AOV sequences (taa )help"
+         TAA_VERSION_STRING R"help()
+
+Usage:
+  taatool [options] COLOR_PATTERN -o OUTPUT_PATTERN
+  taatool --info [--gl auto|egl|osmesa]
+
+Sequences:
+  COLOR_PATTERN            the jittered beauty sequence. Frame placeholders: '#' (4 digits),
+                           '####' or '@@@@' (one digit per
+                           character), '%04d'
+  --frames RANGE           frames to resolve: 1-48, 1-48x2, 1-10,20-30 (default: all found)
+  -o PATTERN               output sequence (written atomically: temp file, then rename)
+
+AOVs and channels:
+  --color-ch R,G,B,A       color channel names, 3 or 4 (default R,G,B,A; missing A reads as 1)
+  --depth PATTERN          depth files (default: none; the color file if --depth-ch is given)
+  --depth-ch NAME          depth channel (default Z)
+  --motion PATTERN         motion-vector files (default: none; the color file if --motion-ch)
+  --motion-ch X,Y          motion channel names (default X,Y)
+  --preset cycles          Blender Cycles multi-layer EXR: <layer>.Combined.RGBA,
+                           <layer>.Depth.Z, <layer>.Vector.XY, all in the color file
+  --layer NAME             render layer name for --preset (default ViewLayer)
+
+Conventions (internal: motion in pixels, y down, pointing to the previous frame):
+  --motion-y up|down       y axis direction of the motion AOV (default down; cycles: up)
+  --motion-to previous|next  where the vectors point (default previous)
+  --motion-scale S         multiply vectors by S (default 1)
+  --depth-nohit V          depth at or above V means nothing was hit (default 1e9)
+
+Jitter (the sub-pixel offset the renderer used for each frame):
+  --jitter halton|none     Halton(2,3) indexed by frame number, or no jitter (default halton)
+  --jitter-offset N        Halton index = frame + N (default 0)
+  --jitter-period P        index cycles through 1..P (default 0: no cycle)
+
+Resolve:
+  --blend A                weight of the current frame, in (0, 1] (default 0.1)
+  --no-clip                keep history unclipped (diagnosis only: ghosts)
+  --no-dilate              take motion at the pixel, not at its closest-depth neighbour
+
+Output:
+  -d half|float            output pixel type (default half)
+  --compression NAME       none, rle, zips, zip, piz, pxr24, b44, b44a, dwaa, dwab (default zip)
+
+GL and diagnostics:
+  --gl auto|egl|osmesa     OpenGL back end (default auto: EGL, falling back to OSMesa)
+  --info                   print GL vendor/renderer/version, OCIO and OIIO versions
+  -v                       one line per frame
+  -q                       errors only
+  -h, --help               this text
+
+Errors are printed as "taatool ERROR: <what> : <file> (frame N, channel C)"; exit status 1.
+)help";
+}
+
+}  // namespace taa::cli

@@ -1,1 +1,30 @@
-// placeholder: being written
+#include "cli/info.h"
+
+#include <OpenColorIO/OpenColorIO.h>
+#include <OpenImageIO/imageio.h>
+
+#include "gl/self_test.h"
+#include "taa/version.h"
+
+namespace taa::cli {
+
+int printInfo(gl::Backend backend, const gl::LogSink& log, std::ostream& out) {
+  auto context = gl::Context::create(backend, log);
+  const gl::ContextInfo& info = context->info();
+  const gl::SelfTestResult selfTest = gl::runSelfTest(*context);
+  const int oiio = OIIO::openimageio_version();
+  out << "taa " << TAA_VERSION_STRING << "\n"
+      << "GL back end:     " << gl::backendName(info.backend) << " (" << info.platform << ")\n"
+      << "GL vendor:       " << info.vendor << "\n"
+      << "GL renderer:     " << info.renderer << "\n"
+      << "GL version:      " << info.version << "\n"
+      << "GLSL version:    " << info.glslVersion << "\n"
+      << "GL self-test:    " << (selfTest.passed ? "passed" : "FAILED") << " ("
+      << selfTest.detail << ")\n"
+      << "OpenColorIO:     " << OCIO_NAMESPACE::GetVersion() << "\n"
+      << "OpenImageIO:     " << oiio / 10000 << "." << (oiio / 100) % 100 << "." << oiio % 100
+      << "\n";
+  return selfTest.passed ? 0 : 1;
+}
+
+}  // namespace taa::cli

@@ -20,9 +20,17 @@ struct WriteOptions {
 // "half" | "float"; otherwise throws taa::Error.
 PixelType parsePixelType(const std::string& text);
 
+// Accepts the OpenEXR compressions none, rle, zips, zip, piz, pxr24, b44, b44a, dwaa, dwab, and
+// "name:level" for zip, zips, dwaa and dwab; otherwise throws taa::Error. Lets faces check the
+// option before any frame is resolved.
+void validateCompression(const std::string& compression);
+
 // Writes `rgba` (4 channels, covering the template's data window) to `path` as R, G, B, A.
 // The template's display/data windows and metadata are kept; channel names, formats and
-// compression come from this call.
+// compression come from this call. A template without pixels (width or height 0, e.g. a
+// default ImageSpec) means a data and display window of rgba's size at the origin, no metadata.
+// A missing parent folder is created. Throws taa::Error naming `path` on any failure, leaving
+// neither a file at `path` (an existing one stays untouched) nor a temporary file.
 void writeExrAtomic(const std::string& path, const Image& rgba, const OIIO::ImageSpec& templateSpec,
                     const WriteOptions& options);
 

@@ -20,9 +20,15 @@ struct FrameData {
   std::string colorPath;
 };
 
-// Reads frame `frame`. All images cover the color file's data window. Throws taa::Error naming
-// file, frame and channel for: a missing or unreadable file, a non-EXR or truncated file, a
-// missing channel (listing those available), depth/motion windows that differ from color's.
+// Reads frame `frame`. All images cover the color file's data window. An AOV with an empty
+// pattern is read from the color file, which is opened once. Channels are looked up by name in
+// subimage 0, in the order the layout lists them (not the file's order).
+// Conversions: color NaN/Inf -> 0 (counted), 3 channels -> A = 1; depth at or above
+// noHitAbove, NaN or +-Inf -> +inf; motion per MotionConvention, then NaN/Inf -> 0.
+// Throws taa::Error naming file, frame and channel for: a missing or unreadable file, a non-EXR
+// (e.g. a PNG, whatever its name), truncated or corrupt file, a missing channel (listing those
+// available), a wrong channel count for an AOV, depth/motion windows that differ from color's
+// (stating both).
 FrameData readFrame(const AovLayout& layout, int frame);
 
 }  // namespace taa::io

@@ -1,0 +1,29 @@
+// taatool's command line: parsing into a SequenceJob, and the grouped --help text.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "resolve/sequence_job.h"
+
+namespace taa::cli {
+
+enum class Verbosity { Quiet, Normal, Verbose };
+
+struct CommandLine {
+  bool help = false;
+  bool info = false;
+  Verbosity verbosity = Verbosity::Normal;
+  std::string framesText;  // --frames as given; empty = every frame found on disk
+  SequenceJob job;         // everything else, ready to run once frames are known
+};
+
+// Parses argv[1..]. Throws taa::Error with a message naming the offending argument.
+CommandLine parseCommandLine(const std::vector<std::string>& args);
+
+// Fills job.frames from --frames or, without it, from the color files found on disk.
+void resolveFrameList(CommandLine& commandLine);
+
+std::string helpText();
+
+}  // namespace taa::cli

@@ -1,0 +1,59 @@
+#include "io/sequence_scan.h"
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+
+#include "io/sequence_pattern.h"
+
+namespace taa::io {
+namespace {
+
+// True for an optional '-' followed by one or more digits.
+bool isFrameNumber(const std::string& text) {
+  const std::size_t start = (!text.empty() && text[0] == '-') ? 1 : 0;
+  if (text.size() == start) return false;
+  return std::all_of(text.begin() + start, text.end(),
+                     [](unsigned char c) { return std::isdigit(c) != 0; });
+}
+
+}  // namespace
+
+std::vector<int> scanExistingFrames(const std::string& pattern) {
+  if (!hasFramePlaceholder(pattern)) return {};
+  namespace fs = std::filesystem;
+  // The text around the placeholder in the file name, found by expanding two frames and
+  // comparing, so the placeholder syntax is parsed in one place only (sequence_pattern.cpp).
+  const std::string one = fs::path(expandFramePattern(pattern, 1)).filename().string();
+  const std::string two = fs::path(expandFramePattern(pattern, 2)).filename().string();
+  std::size_t prefixLength = 0;
+  while (prefixLength < one.size() && one[prefixLength] == two[prefixLength]) ++prefixLength;
+  while (prefixLength > 0 && one[prefixLength - 1] == '0') --prefixLength;  // padding zeros
+  std::size_t suffixLength = 0;  // both names have the same length: same padding, one digit
+  while (suffixLength < one.size() - prefixLength &&
+         one[one.size() - 1 - suffixLength] == two[two.size() - 1 - suffixLength]) {
+    ++suffixLength;
+  }
+  const std::string prefix = one.substr(0, prefixLength);
+  const std::string suffix = one.substr(one.size() - suffixLength);
+
+  fs::path folder = fs::path(expandFramePattern(pattern, 1)).parent_path();
+  if (folder.empty()) folder = ".";
+  std::error_code ec;
+  std::vector<int> frames;
+  for (const auto& entry : fs::directory_iterator(folder, ec)) {
+    const std::string name = entry.path().filename().string();
+    if (name.size() <= prefix.size() + suffix.size()) continue;
+    if (name.compare(0, prefix.size(), prefix) != 0) continue;
+    if (name.compare(name.size() - suffix.size(), suffix.size(), suffix) != 0) continue;
+    const std::string middle = name.substr(prefix.size(), name.size() - prefix.size() - suffix.size());
+    if (!isFrameNumber(middle) || middle.size() > 10) continue;
+    const int frame = std::stoi(middle);
+    // Keep only names the pattern itself produces (rejects other paddings).
+    if (fs::path(expandFramePattern(pattern, frame)).filename() == name) frames.push_back(frame);
+  }
+  std::sort(frames.begin(), frames.end());
+  return frames;
+}
+
+}  // namespace taa::io

@@ -1,0 +1,48 @@
+// Resolving a whole sequence: read each frame, resolve it in order, write it atomically. The
+// CLI, and later the farm and Python faces, describe a job and run it through here.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "gl/context.h"
+#include "io/aov_layout.h"
+#include "io/exr_writer.h"
+#include "taa/options.h"
+
+namespace taa {
+
+struct SequenceJob {
+  io::AovLayout layout;        // where color, depth and motion come from
+  std::vector<int> frames;     // frames to resolve, in order
+  std::string outputPattern;   // frame-numbered output path
+  io::WriteOptions write;
+  ResolveOptions resolve;
+  gl::Backend backend = gl::Backend::Auto;
+};
+
+struct FrameReport {
+  int index = 0;  // position in job.frames, 0-based
+  int count = 0;  // job.frames.size()
+  int frame = 0;
+  std::string inputPath, outputPath;
+  int nonFiniteColorValues = 0;
+  bool historyReset = false;  // the frame started a new history (first frame or a gap)
+};
+
+struct JobCallbacks {
+  gl::LogSink log;                                      // informational messages
+  std::function<void(const FrameReport&)> frameDone;   // after each frame is written
+};
+
+// Checks the job before any work: frames present, every input file of every frame exists,
+// the output pattern can name each frame distinctly and never names an input file.
+// Throws taa::Error naming the file, frame and channel at fault.
+void validateSequenceJob(const SequenceJob& job);
+
+// Validates, creates the GL context and runs the job. Throws taa::Error on failure; frames
+// written before the failure are complete files, the failing frame leaves nothing behind.
+void runSequenceJob(const SequenceJob& job, const JobCallbacks& callbacks = {});
+
+}  // namespace taa

@@ -1,0 +1,21 @@
+#!/usr/bin/env bash
+# Installs everything taa needs to build and test, from Debian 12 packages only.
+set -euo pipefail
+
+packages=(
+  build-essential cmake pkg-config
+  libopenimageio-dev openimageio-tools libopenexr-dev libimath-dev
+  libopencolorio-dev
+  libglm-dev
+  libgl-dev libegl-dev libegl-mesa0 libosmesa6-dev libgl1-mesa-dri  # headless GL on llvmpipe
+  libgtest-dev
+)
+
+sudo_cmd=()
+if [ "$(id -u)" -ne 0 ]; then sudo_cmd=(sudo); fi
+
+if ! dpkg -s "${packages[@]}" >/dev/null 2>&1; then
+  "${sudo_cmd[@]}" apt-get update
+  "${sudo_cmd[@]}" env DEBIAN_FRONTEND=noninteractive apt-get install -y --no-install-recommends \
+    "${packages[@]}"
+fi

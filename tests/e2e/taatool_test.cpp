@@ -1,0 +1,237 @@
+// End-to-end: run the taatool binary on generated sequences, check outputs, errors and exit codes.
+#include <gtest/gtest.h>
+
+#include <OpenImageIO/imageio.h>
+#include <sys/wait.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "scenegen/exr_output.h"
+#include "scenegen/scene_library.h"
+
+namespace taa {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct RunResult {
+  int exitCode = -1;
+  std::string out, err;
+};
+
+std::string readText(const fs::path& path) {
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+std::string quoted(const std::string& s) { return "'" + s + "'"; }
+
+class TaatoolTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    dir_ = fs::path(TAA_TEST_TMPDIR) / info->name();
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+
+  RunResult run(const std::vector<std::string>& args) const {
+    std::string command = quoted(TAA_TAATOOL_PATH);
+    for (const auto& a : args) command += " " + quoted(a);
+    const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
+    command += " >" + quoted(out.string()) + " 2>" + quoted(err.string()) + " </dev/null";
+    const int status = std::system(command.c_str());
+    RunResult result;
+    result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    result.out = readText(out);
+    result.err = readText(err);
+    return result;
+  }
+
+  // Writes frames [first, last] of a small scene into dir_/name in the given layout.
+  fs::path generate(const std::string& name, scenes::OutputLayout layout, int first = 1,
+                    int last = 6, const std::string& scene = "moving_object") const {
+    const fs::path folder = dir_ / name;
+    auto s = scenes::makeScene(scene, 64, 40);
+    scenes::RenderSettings settings;
+    settings.truthSamplesPerAxis = 4;  // truth is not what these tests check
+    for (int f = first; f <= last; ++f) {
+      scenes::writeFrame(s->render(f, settings), scene, layout, folder.string());
+    }
+    return folder;
+  }
+
+  std::vector<std::string> separateArgs(const fs::path& in, const fs::path& outPattern) const {
+    return {(in / "beauty.####.exr").string(), "--depth", (in / "depth.####.exr").string(),
+            "--motion", (in / "motion.####.exr").string(), "-o", outPattern.string()};
+  }
+
+  // Everything in `folder` whose name contains `part` (outputs, temp files).
+  static std::vector<std::string> filesContaining(const fs::path& folder, const std::string& part) {
+    std::vector<std::string> names;
+    if (!fs::exists(folder)) return names;
+    for (const auto& e : fs::directory_iterator(folder)) {
+      const std::string name = e.path().filename().string();
+      if (name.find(part) != std::string::npos) names.push_back(name);
+    }
+    return names;
+  }
+
+  void expectError(const RunResult& r, const std::vector<std::string>& fragments) const {
+    EXPECT_EQ(r.exitCode, 1) << r.err;
+    EXPECT_EQ(r.err.rfind("taatool ERROR: ", 0), 0u) << r.err;
+    for (const auto& f : fragments) EXPECT_NE(r.err.find(f), std::string::npos) << f << " in " << r.err;
+  }
+
+  fs::path dir_;
+};
+
+std::vector<float> readPixels(const fs::path& path, OIIO::ImageSpec* specOut = nullptr) {
+  auto in = OIIO::ImageInput::open(path.string());
+  EXPECT_TRUE(in) << path;
+  if (!in) return {};
+  const OIIO::ImageSpec spec = in->spec();
+  if (specOut) *specOut = spec;
+  std::vector<float> pixels(spec.image_pixels() * spec.nchannels);
+  in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, pixels.data());
+  return pixels;
+}
+
+TEST_F(TaatoolTest, ResolvesSeparateFilesIntoRgbaExrKeepingWindows) {
+  const fs::path in = generate("in", scenes::OutputLayout::Separate);
+  const fs::path out = dir_ / "out";
+  auto args = separateArgs(in, out / "resolved.####.exr");
+  args.push_back("-v");
+  const RunResult r = run(args);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("frame 6 (6/6)"), std::string::npos) << r.out;
+  for (int f = 1; f <= 6; ++f) {
+    char name[64];
+    std::snprintf(name, sizeof name, "resolved.%04d.exr", f);
+    ASSERT_TRUE(fs::exists(out / name)) << name;
+  }
+  OIIO::ImageSpec spec, inSpec;
+  readPixels(out / "resolved.0003.exr", &spec);
+  readPixels(in / "beauty.0003.exr", &inSpec);
+  EXPECT_EQ(spec.nchannels, 4);
+  EXPECT_EQ(spec.channelnames, (std::vector<std::string>{"R", "G", "B", "A"}));
+  EXPECT_EQ(spec.format, OIIO::TypeDesc::HALF);
+  EXPECT_EQ(spec.width, inSpec.width);
+  EXPECT_EQ(spec.full_width, inSpec.full_width);
+  EXPECT_EQ(spec.x, inSpec.x);
+  EXPECT_EQ(spec.get_string_attribute("compression"), "zip");
+  EXPECT_TRUE(filesContaining(out, "tmp").empty());
+}
+
+TEST_F(TaatoolTest, CyclesLayoutGivesTheSameOutputAsSeparateFiles) {
+  const fs::path separate = generate("separate", scenes::OutputLayout::Separate);
+  const fs::path cycles = generate("cycles", scenes::OutputLayout::Cycles);
+  auto args = separateArgs(separate, dir_ / "a.####.exr");
+  args.insert(args.end(), {"-d", "float"});
+  ASSERT_EQ(run(args).exitCode, 0);
+  const RunResult r = run({"--preset", "cycles", (cycles / "render.####.exr").string(), "-d",
+                           "float", "-o", (dir_ / "b.####.exr").string()});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  for (int f : {1, 4, 6}) {
+    char a[32], b[32];
+    std::snprintf(a, sizeof a, "a.%04d.exr", f);
+    std::snprintf(b, sizeof b, "b.%04d.exr", f);
+    const auto pa = readPixels(dir_ / a), pb = readPixels(dir_ / b);
+    ASSERT_EQ(pa.size(), pb.size());
+    for (std::size_t i = 0; i < pa.size(); ++i) ASSERT_NEAR(pa[i], pb[i], 1e-5f) << f << ":" << i;
+  }
+}
+
+TEST_F(TaatoolTest, MissingFrameInRange) {
+  const fs::path in = generate("in", scenes::OutputLayout::Separate);
+  fs::remove(in / "motion.0004.exr");
+  auto args = separateArgs(in, dir_ / "out" / "r.####.exr");
+  args.insert(args.end(), {"--frames", "1-6"});
+  expectError(run(args), {"missing input frame", "motion.0004.exr", "frame 4", "motion"});
+  EXPECT_FALSE(fs::exists(dir_ / "out"));  // checked before any frame is written
+}
+
+TEST_F(TaatoolTest, MissingChannelListsAvailableOnes) {
+  const fs::path in = generate("in", scenes::OutputLayout::Separate, 1, 2);
+  auto args = separateArgs(in, dir_ / "r.####.exr");
+  args.insert(args.end(), {"--depth-ch", "depth.Z"});
+  expectError(run(args), {"depth.Z", "depth.0001.exr", "frame 1", "Z"});
+  EXPECT_TRUE(filesContaining(dir_, "r.").empty());
+}
+
+TEST_F(TaatoolTest, DepthOrMotionSizeDifferentFromColor) {
+  const fs::path in = generate("in", scenes::OutputLayout::Separate, 1, 3);
+  const fs::path small = generate("small", scenes::OutputLayout::Separate, 3, 3);
+  {
+    auto s = scenes::makeScene("moving_object", 32, 20);
+    scenes::RenderSettings settings;
+    settings.truthSamplesPerAxis = 1;
+    scenes::writeFrame(s->render(3, settings), "moving_object", scenes::OutputLayout::Separate,
+                       small.string());
+  }
+  fs::copy_file(small / "motion.0003.exr", in / "motion.0003.exr",
+                fs::copy_options::overwrite_existing);
+  const RunResult r = run(separateArgs(in, dir_ / "out" / "r.####.exr"));
+  expectError(r, {"motion.0003.exr", "frame 3", "32x20", "64x40"});
+  EXPECT_FALSE(fs::exists(dir_ / "out" / "r.0003.exr"));
+  EXPECT_TRUE(fs::exists(dir_ / "out" / "r.0002.exr"));  // earlier frames are complete files
+  EXPECT_TRUE(filesContaining(dir_ / "out", "tmp").empty());
+}
+
+TEST_F(TaatoolTest, NonExrAndTruncatedFiles) {
+  const fs::path in = generate("in", scenes::OutputLayout::Separate, 1, 3);
+  std::ofstream(in / "beauty.0002.exr") << "this is not an EXR file\n";
+  expectError(run(separateArgs(in, dir_ / "o1" / "r.####.exr")), {"beauty.0002.exr", "frame 2"});
+  EXPECT_FALSE(fs::exists(dir_ / "o1" / "r.0002.exr"));
+
+  const fs::path in2 = generate("in2", scenes::OutputLayout::Separate, 1, 3);
+  const fs::path victim = in2 / "depth.0003.exr";
+  fs::resize_file(victim, fs::file_size(victim) / 2);
+  expectError(run(separateArgs(in2, dir_ / "o2" / "r.####.exr")),
+              {"depth.0003.exr", "frame 3"});
+  EXPECT_FALSE(fs::exists(dir_ / "o2" / "r.0003.exr"));
+  EXPECT_TRUE(filesContaining(dir_ / "o2", "tmp").empty());
+}
+
+TEST_F(TaatoolTest, OutputPatternEqualToAnInput) {
+  const fs::path in = generate("in", scenes::OutputLayout::Separate, 1, 2);
+  const auto before = fs::file_size(in / "beauty.0001.exr");
+  // Same files spelled differently: another placeholder style and a "./" detour.
+  const RunResult r = run(separateArgs(in, in / "." / "beauty.%04d.exr"));
+  expectError(r, {"output would overwrite an input file", "beauty.0001.exr"});
+  EXPECT_EQ(fs::file_size(in / "beauty.0001.exr"), before);
+}
+
+TEST_F(TaatoolTest, UnknownGlBackend) {
+  expectError(run({"--info", "--gl", "vulkan"}), {"vulkan", "auto", "egl", "osmesa"});
+}
+
+TEST_F(TaatoolTest, InfoReportsAWorkingContextForEachBackend) {
+  for (const char* backend : {"egl", "osmesa"}) {
+    const RunResult r = run({"--info", "--gl", backend});
+    EXPECT_EQ(r.exitCode, 0) << backend << ": " << r.err;
+    EXPECT_NE(r.out.find(std::string("GL back end:     ") + backend), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("GL self-test:    passed"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("GL renderer:     "), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("OpenColorIO:     2."), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("OpenImageIO:     2."), std::string::npos) << r.out;
+  }
+}
+
+TEST_F(TaatoolTest, HelpAndBadArguments) {
+  const RunResult help = run({"--help"});
+  EXPECT_EQ(help.exitCode, 0);
+  EXPECT_NE(help.out.find("Usage:"), std::string::npos);
+  expectError(run({"--frobnicate"}), {"unknown option --frobnicate"});
+  expectError(run({(dir_ / "none.####.exr").string(), "-o", (dir_ / "o.####.exr").string()}),
+              {"no frames found", "none.####.exr"});
+}
+
+}  // namespace
+}  // namespace taa

@@ -1,0 +1,272 @@
+#include "io/exr_writer.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+
+#include "taa/error.h"
+#include "test_files.h"
+
+namespace taa::io {
+namespace {
+namespace fs = std::filesystem;
+
+using taa::test::listFolder;
+using taa::test::makeSpec;
+using taa::test::readImage;
+using taa::test::scratchFolder;
+
+using Names = std::vector<std::string>;
+
+bool contains(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
+
+Error expectError(const std::function<void()>& run) {
+  try {
+    run();
+  } catch (const Error& error) {
+    return error;
+  }
+  ADD_FAILURE() << "expected a taa::Error";
+  return Error("no error");
+}
+
+// A Cycles-like header: data window 5x3 at (4, 5) inside a 16x12 display window at (1, 2),
+// five channels, piz, render metadata.
+OIIO::ImageSpec cyclesLikeTemplate() {
+  OIIO::ImageSpec spec =
+      makeSpec(5, 3, {"ViewLayer.Combined.A", "ViewLayer.Combined.B", "ViewLayer.Combined.G",
+                      "ViewLayer.Combined.R", "ViewLayer.Depth.Z"});
+  spec.x = 4;
+  spec.y = 5;
+  spec.full_x = 1;
+  spec.full_y = 2;
+  spec.full_width = 16;
+  spec.full_height = 12;
+  spec.attribute("compression", "piz");
+  spec.attribute("BlenderMultiChannel", "Blender V2.55.1 and newer");
+  spec.attribute("Camera", "CamShot");
+  spec.attribute("cycles.ViewLayer.samples", 64);
+  spec.attribute("FramesPerSecond", OIIO::TypeRational, std::vector<int>{24, 1}.data());
+  const float worldToCamera[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, -1, 0, 2, 3, 4, 1};
+  spec.attribute("worldToCamera", OIIO::TypeMatrix44, worldToCamera);
+  return spec;
+}
+
+// `value` rounded to the nearest half, through OIIO's own conversion.
+float roundedToHalf(float value) {
+  std::uint16_t half = 0;
+  OIIO::convert_pixel_values(OIIO::TypeFloat, &value, OIIO::TypeHalf, &half);
+  float back = 0.0f;
+  OIIO::convert_pixel_values(OIIO::TypeHalf, &half, OIIO::TypeFloat, &back);
+  return back;
+}
+
+Image makeRgba(int width, int height, const std::function<float(int, int)>& value) {
+  Image image(width, height, 4);
+  for (std::size_t i = 0; i < image.pixels.size(); ++i) {
+    image.pixels[i] = value(int(i / 4), int(i % 4));
+  }
+  return image;
+}
+
+void expectNoTemporaryFiles(const std::string& folder) {
+  for (const std::string& name : listFolder(folder)) {
+    EXPECT_FALSE(contains(name, "taa-tmp")) << "left behind: " << name;
+  }
+}
+
+TEST(ParsePixelType, HalfAndFloat) {
+  EXPECT_EQ(parsePixelType("half"), PixelType::Half);
+  EXPECT_EQ(parsePixelType("float"), PixelType::Float);
+  for (const std::string text : {"", "double", "uint8", "Half "}) {
+    EXPECT_TRUE(contains(expectError([&] { parsePixelType(text); }).what(), "\"" + text + "\""));
+  }
+}
+
+TEST(ValidateCompression, AcceptsOpenExrCompressions) {
+  for (const std::string name : {"none", "rle", "zips", "zip", "piz", "pxr24", "b44", "b44a",
+                                 "dwaa", "dwab", "zip:9", "zips:1", "dwaa:45", "dwab:200.5"}) {
+    EXPECT_NO_THROW(validateCompression(name)) << name;
+  }
+}
+
+TEST(ValidateCompression, RejectsUnknownNamesAndBadLevels) {
+  for (const std::string name : {"", "lzw", "ZIP", "zip:", "zip:fast", "piz:3", "dwaa:-1",
+                                 "jpeg", "zip 9"}) {
+    const Error error = expectError([&] { validateCompression(name); });
+    EXPECT_TRUE(contains(error.what(), "\"" + name + "\"")) << error.what();
+  }
+}
+
+TEST(WriteExrAtomic, FloatRoundTripKeepsValuesWindowsAndMetadata) {
+  const std::string folder = scratchFolder();
+  const std::string path = folder + "/out.0001.exr";
+  const Image rgba = makeRgba(5, 3, [](int p, int c) { return 0.123456789f * p - 3.3f * c; });
+  writeExrAtomic(path, rgba, cyclesLikeTemplate(), {PixelType::Float, "zip"});
+
+  OIIO::ImageSpec spec;
+  const std::vector<float> pixels = readImage(path, spec);
+  EXPECT_EQ(spec.channelnames, Names({"R", "G", "B", "A"}));
+  EXPECT_EQ(spec.format, OIIO::TypeFloat);
+  EXPECT_EQ(pixels, rgba.pixels);  // float is exact
+  // Data window and display window.
+  EXPECT_EQ(spec.x, 4);
+  EXPECT_EQ(spec.y, 5);
+  EXPECT_EQ(spec.width, 5);
+  EXPECT_EQ(spec.height, 3);
+  EXPECT_EQ(spec.full_x, 1);
+  EXPECT_EQ(spec.full_y, 2);
+  EXPECT_EQ(spec.full_width, 16);
+  EXPECT_EQ(spec.full_height, 12);
+  // Metadata kept; the old layout's description dropped; compression from the options.
+  EXPECT_EQ(spec.get_string_attribute("Camera"), "CamShot");
+  EXPECT_EQ(spec.get_int_attribute("cycles.ViewLayer.samples"), 64);
+  const OIIO::ParamValue* fps = spec.find_attribute("FramesPerSecond", OIIO::TypeRational);
+  ASSERT_NE(fps, nullptr);
+  EXPECT_EQ(static_cast<const int*>(fps->data())[0], 24);
+  const OIIO::ParamValue* matrix = spec.find_attribute("worldToCamera", OIIO::TypeMatrix44);
+  ASSERT_NE(matrix, nullptr);
+  EXPECT_EQ(static_cast<const float*>(matrix->data())[10], -1.0f);
+  EXPECT_EQ(static_cast<const float*>(matrix->data())[13], 3.0f);
+  EXPECT_EQ(spec.find_attribute("BlenderMultiChannel"), nullptr);
+  EXPECT_EQ(spec.get_string_attribute("compression"), "zip");
+  expectNoTemporaryFiles(folder);
+}
+
+TEST(WriteExrAtomic, HalfRoundTripWithinHalfPrecision) {
+  const std::string folder = scratchFolder();
+  const std::string path = folder + "/out.exr";
+  // Multiples of 1/8 are exact in half; 0.1 is not.
+  const Image exact = makeRgba(5, 3, [](int p, int c) { return 0.125f * p + c; });
+  writeExrAtomic(path, exact, cyclesLikeTemplate(), {PixelType::Half, "piz"});
+  OIIO::ImageSpec spec;
+  EXPECT_EQ(readImage(path, spec), exact.pixels);
+  EXPECT_EQ(spec.format, OIIO::TypeHalf);
+
+  const Image inexact =
+      makeRgba(5, 3, [](int p, int c) { return 0.1f + 1.37f * p + 0.01f * c; });
+  writeExrAtomic(path, inexact, cyclesLikeTemplate(), {PixelType::Half, "piz"});
+  const std::vector<float> pixels = readImage(path, spec);
+  for (std::size_t i = 0; i < pixels.size(); ++i) {
+    // Exactly the nearest half: the file holds halves, converted once.
+    EXPECT_EQ(pixels[i], roundedToHalf(inexact.pixels[i]));
+    EXPECT_NEAR(pixels[i], inexact.pixels[i], std::abs(inexact.pixels[i]) * 1e-3f);
+  }
+  EXPECT_NE(pixels, inexact.pixels);
+}
+
+TEST(WriteExrAtomic, CompressionComesFromTheOptions) {
+  const std::string folder = scratchFolder();
+  const Image rgba = makeRgba(5, 3, [](int p, int c) { return float(p + c); });
+  for (const std::string compression : {"none", "rle", "piz", "pxr24", "b44a", "dwaa"}) {
+    const std::string path = folder + "/" + compression + ".exr";
+    writeExrAtomic(path, rgba, cyclesLikeTemplate(), {PixelType::Half, compression});
+    OIIO::ImageSpec spec;
+    readImage(path, spec);
+    // OIIO may append a level ("dwaa:45"), so compare the name part.
+    EXPECT_EQ(spec.get_string_attribute("compression").substr(0, compression.size()),
+              compression);
+  }
+}
+
+TEST(WriteExrAtomic, WithoutTemplatePixelsTheWindowIsTheImage) {
+  const std::string folder = scratchFolder();
+  const std::string path = folder + "/plain.exr";
+  const Image rgba = makeRgba(3, 2, [](int p, int c) { return float(p * 4 + c); });
+  writeExrAtomic(path, rgba, OIIO::ImageSpec(), {PixelType::Float, "zip"});
+  OIIO::ImageSpec spec;
+  EXPECT_EQ(readImage(path, spec), rgba.pixels);
+  EXPECT_EQ(spec.x, 0);
+  EXPECT_EQ(spec.full_width, 3);
+  EXPECT_EQ(spec.full_height, 2);
+}
+
+TEST(WriteExrAtomic, ReplacesAnExistingFile) {
+  const std::string folder = scratchFolder();
+  const std::string path = folder + "/out.exr";
+  const Image first = makeRgba(5, 3, [](int, int) { return 1.0f; });
+  const Image second = makeRgba(5, 3, [](int, int) { return 2.0f; });
+  writeExrAtomic(path, first, cyclesLikeTemplate(), {PixelType::Float, "zip"});
+  writeExrAtomic(path, second, cyclesLikeTemplate(), {PixelType::Float, "zip"});
+  OIIO::ImageSpec spec;
+  EXPECT_EQ(readImage(path, spec), second.pixels);
+  EXPECT_EQ(listFolder(folder), Names({"out.exr"}));
+}
+
+TEST(WriteExrAtomic, CreatesAMissingParentFolder) {
+  const std::string folder = scratchFolder();
+  const std::string path = folder + "/new/deeper/out.exr";
+  writeExrAtomic(path, makeRgba(5, 3, [](int, int) { return 0.5f; }), cyclesLikeTemplate(), {});
+  EXPECT_TRUE(fs::is_regular_file(path));
+  EXPECT_EQ(listFolder(folder + "/new/deeper"), Names({"out.exr"}));
+}
+
+TEST(WriteExrAtomic, UnknownCompressionWritesNothing) {
+  const std::string folder = scratchFolder();
+  const std::string path = folder + "/out.exr";
+  const Error error = expectError([&] {
+    writeExrAtomic(path, makeRgba(5, 3, [](int, int) { return 0.5f; }), cyclesLikeTemplate(),
+                   {PixelType::Half, "lzma"});
+  });
+  EXPECT_EQ(error.context().file, path);
+  EXPECT_TRUE(contains(error.what(), "lzma")) << error.what();
+  EXPECT_TRUE(listFolder(folder).empty());
+}
+
+TEST(WriteExrAtomic, ParentThatIsAFileFailsAndLeavesNothing) {
+  const std::string folder = scratchFolder();
+  taa::test::writeTextFile(folder + "/blocker", "a file, not a folder");
+  const std::string path = folder + "/blocker/out.exr";
+  const Error error = expectError([&] {
+    writeExrAtomic(path, makeRgba(5, 3, [](int, int) { return 0.5f; }), cyclesLikeTemplate(), {});
+  });
+  EXPECT_EQ(error.context().file, path);
+  EXPECT_TRUE(contains(error.what(), path)) << error.what();
+  EXPECT_EQ(listFolder(folder), Names({"blocker"}));
+}
+
+TEST(WriteExrAtomic, FailedRenameRemovesTheTemporaryFile) {
+  const std::string folder = scratchFolder();
+  // A non-empty folder sits at the final path: the EXR is written, the rename must fail.
+  const std::string path = folder + "/out.exr";
+  fs::create_directories(path + "/inside");
+  const Error error = expectError([&] {
+    writeExrAtomic(path, makeRgba(5, 3, [](int, int) { return 0.5f; }), cyclesLikeTemplate(), {});
+  });
+  EXPECT_EQ(error.context().file, path);
+  EXPECT_EQ(listFolder(folder), Names({"out.exr"}));
+  EXPECT_TRUE(fs::is_directory(path + "/inside"));
+  expectNoTemporaryFiles(folder);
+}
+
+TEST(WriteExrAtomic, FailedWriteKeepsTheExistingFile) {
+  const std::string folder = scratchFolder();
+  const std::string path = folder + "/out.exr";
+  const Image original = makeRgba(5, 3, [](int, int) { return 1.0f; });
+  writeExrAtomic(path, original, cyclesLikeTemplate(), {PixelType::Float, "zip"});
+  // An image that does not match the template's data window must not touch the file.
+  expectError([&] {
+    writeExrAtomic(path, makeRgba(4, 3, [](int, int) { return 2.0f; }), cyclesLikeTemplate(),
+                   {PixelType::Float, "zip"});
+  });
+  OIIO::ImageSpec spec;
+  EXPECT_EQ(readImage(path, spec), original.pixels);
+  EXPECT_EQ(listFolder(folder), Names({"out.exr"}));
+}
+
+TEST(WriteExrAtomic, SizeMismatchStatesBothSizes) {
+  const std::string folder = scratchFolder();
+  const Error error = expectError([&] {
+    writeExrAtomic(folder + "/o.exr", makeRgba(4, 3, [](int, int) { return 0.0f; }),
+                   cyclesLikeTemplate(), {});
+  });
+  EXPECT_TRUE(contains(error.what(), "4x3")) << error.what();
+  EXPECT_TRUE(contains(error.what(), "5x3")) << error.what();
+}
+
+}  // namespace
+}  // namespace taa::io

@@ -1,0 +1,383 @@
+#include "io/frame_reader.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <functional>
+#include <limits>
+
+#include "taa/error.h"
+#include "test_files.h"
+
+namespace taa::io {
+namespace {
+
+using taa::test::makeSpec;
+using taa::test::scratchFolder;
+using taa::test::writeImage;
+
+constexpr float kInf = std::numeric_limits<float>::infinity();
+constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
+
+bool contains(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
+
+// Runs `read`, expecting a taa::Error; returns it for inspection.
+Error expectError(const std::function<void()>& read) {
+  try {
+    read();
+  } catch (const Error& error) {
+    return error;
+  }
+  ADD_FAILURE() << "expected a taa::Error";
+  return Error("no error");
+}
+
+// Writes a 4x3 float EXR whose channel c of pixel p holds value(p, c).
+void writeTestExr(const std::string& path, const std::vector<std::string>& channels,
+                  const std::function<float(int, int)>& value, int width = 4, int height = 3) {
+  std::vector<float> pixels;
+  for (int p = 0; p < width * height; ++p) {
+    for (int c = 0; c < int(channels.size()); ++c) pixels.push_back(value(p, c));
+  }
+  writeImage(path, makeSpec(width, height, channels), pixels);
+}
+
+AovLayout separateFilesLayout(const std::string& folder) {
+  AovLayout layout;
+  layout.color = {folder + "/beauty.%04d.exr", {"R", "G", "B", "A"}};
+  layout.depth = AovSource{folder + "/depth.@@@@.exr", {"Z"}};
+  layout.motion = AovSource{folder + "/mv.#.exr", {"u", "v"}};
+  return layout;
+}
+
+// The three files of separateFilesLayout() for `frame`, sizes overridable.
+void writeSeparateFiles(const std::string& folder, int frame, int depthWidth = 4,
+                        int motionHeight = 3) {
+  const std::string number = std::to_string(frame);
+  const std::string padded = std::string(4 - number.size(), '0') + number;
+  writeTestExr(folder + "/beauty." + padded + ".exr", {"R", "G", "B", "A"},
+               [](int p, int c) { return float(p) + 0.1f * float(c + 1); });
+  writeTestExr(
+      folder + "/depth." + padded + ".exr", {"Z"}, [](int p, int) { return float(p + 1); },
+      depthWidth, 3);
+  writeTestExr(
+      folder + "/mv." + padded + ".exr", {"u", "v"},
+      [](int p, int c) { return c == 0 ? float(p) : -float(p); }, 4, motionHeight);
+}
+
+TEST(ReadFrame, CyclesMultiLayerFileConvertsToInternalConventions) {
+  const std::string folder = scratchFolder();
+  // Listed in a scrambled order; EXR stores them sorted by name anyway.
+  const std::vector<std::string> channels = {
+      "ViewLayer.Vector.Y", "ViewLayer.Combined.B", "ViewLayer.Depth.Z", "ViewLayer.Combined.R",
+      "ViewLayer.Vector.X", "ViewLayer.Combined.A", "ViewLayer.Combined.G", "ViewLayer.Vector.Z",
+      "ViewLayer.Vector.W", "ViewLayer.Normal.X"};
+  const auto value = [&](int p, int c) -> float {
+    const std::string& name = channels[c];
+    if (name == "ViewLayer.Combined.R") return 1.0f + p;
+    if (name == "ViewLayer.Combined.G") return 2.0f + p;
+    if (name == "ViewLayer.Combined.B") return 3.0f + p;
+    if (name == "ViewLayer.Combined.A") return 0.25f;
+    if (name == "ViewLayer.Depth.Z") return p == 0 ? 1e10f : 10.0f + p;
+    if (name == "ViewLayer.Vector.X") return 0.5f + p;
+    if (name == "ViewLayer.Vector.Y") return 1.5f + p;
+    return 99.0f;  // Vector.ZW (to next frame) and Normal must not be read
+  };
+  writeTestExr(folder + "/render.0007.exr", channels, value);
+
+  const FrameData data = readFrame(cyclesLayout(folder + "/render.####.exr"), 7);
+
+  EXPECT_EQ(data.frame, 7);
+  EXPECT_EQ(data.colorPath, folder + "/render.0007.exr");
+  EXPECT_EQ(data.colorSpec.width, 4);
+  EXPECT_EQ(data.colorSpec.height, 3);
+  EXPECT_EQ(data.nonFiniteColorValues, 0);
+  ASSERT_EQ(data.color.channels, 4);
+  ASSERT_EQ(data.depth.channels, 1);
+  ASSERT_EQ(data.motion.channels, 2);
+  for (int p = 0; p < 12; ++p) {
+    const int x = p % 4;
+    const int y = p / 4;
+    SCOPED_TRACE("pixel " + std::to_string(p));
+    EXPECT_EQ(data.color.at(x, y)[0], 1.0f + p);
+    EXPECT_EQ(data.color.at(x, y)[1], 2.0f + p);
+    EXPECT_EQ(data.color.at(x, y)[2], 3.0f + p);
+    EXPECT_EQ(data.color.at(x, y)[3], 0.25f);
+    EXPECT_EQ(data.depth.at(x, y)[0], p == 0 ? kInf : 10.0f + p);
+    // Cycles: (X, Y) = previous - current with y up, so internal motion is (X, -Y).
+    EXPECT_EQ(data.motion.at(x, y)[0], 0.5f + p);
+    EXPECT_EQ(data.motion.at(x, y)[1], -(1.5f + p));
+  }
+}
+
+TEST(ReadFrame, ChannelsComeInTheRequestedOrderNotTheFileOrder) {
+  const std::string folder = scratchFolder();
+  // Sorted in the file: alpha, beta, delta, gamma. beta lies inside the read range, unasked.
+  writeTestExr(folder + "/c.exr", {"alpha", "beta", "gamma", "delta"},
+               [](int p, int c) { return float(10 * c + p); });
+  AovLayout layout;
+  layout.color = {folder + "/c.exr", {"gamma", "alpha", "delta"}};
+  const FrameData data = readFrame(layout, 1);
+  for (int p = 0; p < 12; ++p) {
+    const float* rgba = data.color.at(p % 4, p / 4);
+    EXPECT_EQ(rgba[0], float(20 + p));
+    EXPECT_EQ(rgba[1], float(0 + p));
+    EXPECT_EQ(rgba[2], float(30 + p));
+    EXPECT_EQ(rgba[3], 1.0f);
+  }
+}
+
+TEST(ReadFrame, SeparateFilesPerAovWithEveryPlaceholderKind) {
+  const std::string folder = scratchFolder();
+  writeSeparateFiles(folder, 12);
+  AovLayout layout = separateFilesLayout(folder);
+  // A file whose vectors point to the next frame, y down, at half resolution.
+  layout.motionConvention = {false, false, 2.0f};
+  const FrameData data = readFrame(layout, 12);
+  for (int p = 0; p < 12; ++p) {
+    const int x = p % 4;
+    const int y = p / 4;
+    EXPECT_FLOAT_EQ(data.color.at(x, y)[0], p + 0.1f);
+    EXPECT_FLOAT_EQ(data.color.at(x, y)[3], p + 0.4f);
+    EXPECT_EQ(data.depth.at(x, y)[0], float(p + 1));
+    EXPECT_EQ(data.motion.at(x, y)[0], -2.0f * p);
+    EXPECT_EQ(data.motion.at(x, y)[1], 2.0f * p);
+  }
+}
+
+TEST(ReadFrame, LayoutWithoutDepthAndMotionLeavesThemEmpty) {
+  const std::string folder = scratchFolder();
+  writeSeparateFiles(folder, 1);
+  AovLayout layout = separateFilesLayout(folder);
+  layout.depth.reset();
+  layout.motion.reset();
+  const FrameData data = readFrame(layout, 1);
+  EXPECT_FALSE(data.color.empty());
+  EXPECT_TRUE(data.depth.empty());
+  EXPECT_TRUE(data.motion.empty());
+}
+
+TEST(ReadFrame, ThreeChannelColorGetsOpaqueAlpha) {
+  const std::string folder = scratchFolder();
+  writeTestExr(folder + "/rgb.exr", {"R", "G", "B"}, [](int p, int c) { return float(p + c); });
+  AovLayout layout;
+  layout.color = {folder + "/rgb.exr", {"R", "G", "B"}};
+  const FrameData data = readFrame(layout, 1);
+  ASSERT_EQ(data.color.channels, 4);
+  for (int p = 0; p < 12; ++p) {
+    EXPECT_EQ(data.color.pixels[p * 4 + 2], float(p + 2));
+    EXPECT_EQ(data.color.pixels[p * 4 + 3], 1.0f);
+  }
+}
+
+TEST(ReadFrame, NonFiniteValuesAreScrubbedAndCounted) {
+  const std::string folder = scratchFolder();
+  writeTestExr(folder + "/c.exr", {"R", "G", "B", "A"}, [](int p, int c) {
+    if (p == 0 && c == 0) return kNaN;
+    if (p == 1 && c == 1) return kInf;
+    if (p == 2 && c == 3) return -kInf;
+    return 0.5f;
+  });
+  writeTestExr(folder + "/z.exr", {"Z"}, [](int p, int) {
+    if (p == 0) return kNaN;
+    if (p == 1) return -kInf;
+    if (p == 2) return kInf;
+    if (p == 3) return 1e9f;  // exactly at the threshold: no hit
+    return 5e8f;
+  });
+  writeTestExr(folder + "/mv.exr", {"x", "y"}, [](int p, int c) {
+    if (p == 0) return c == 0 ? kNaN : 1.0f;
+    if (p == 1) return c == 0 ? 2.0f : kInf;
+    return 3.0f;
+  });
+  AovLayout layout;
+  layout.color = {folder + "/c.exr", {"R", "G", "B", "A"}};
+  layout.depth = AovSource{folder + "/z.exr", {"Z"}};
+  layout.motion = AovSource{folder + "/mv.exr", {"x", "y"}};
+  layout.motionConvention.yUp = true;
+  const FrameData data = readFrame(layout, 3);
+
+  EXPECT_EQ(data.nonFiniteColorValues, 3);
+  EXPECT_EQ(data.color.pixels[0], 0.0f);
+  EXPECT_EQ(data.color.pixels[4 + 1], 0.0f);
+  EXPECT_EQ(data.color.pixels[8 + 3], 0.0f);
+  EXPECT_EQ(data.color.pixels[8 + 2], 0.5f);
+  for (float value : data.color.pixels) EXPECT_TRUE(std::isfinite(value));
+
+  EXPECT_EQ(data.depth.pixels[0], kInf);
+  EXPECT_EQ(data.depth.pixels[1], kInf);
+  EXPECT_EQ(data.depth.pixels[2], kInf);
+  EXPECT_EQ(data.depth.pixels[3], kInf);
+  EXPECT_EQ(data.depth.pixels[4], 5e8f);
+
+  EXPECT_EQ(data.motion.pixels[0], 0.0f);
+  EXPECT_EQ(data.motion.pixels[1], -1.0f);
+  EXPECT_EQ(data.motion.pixels[2], 2.0f);
+  EXPECT_EQ(data.motion.pixels[3], 0.0f);
+  EXPECT_EQ(data.motion.pixels[4], 3.0f);
+  EXPECT_EQ(data.motion.pixels[5], -3.0f);
+}
+
+TEST(ReadFrame, KeepsTheColorHeader) {
+  const std::string folder = scratchFolder();
+  OIIO::ImageSpec spec = makeSpec(4, 3, {"R", "G", "B", "A"});
+  spec.x = 3;
+  spec.y = 5;
+  spec.full_x = 0;
+  spec.full_y = 0;
+  spec.full_width = 10;
+  spec.full_height = 12;
+  spec.attribute("taa:shot", "sq010_sh020");
+  writeImage(folder + "/c.exr", spec, std::vector<float>(4 * 3 * 4, 0.5f));
+  AovLayout layout;
+  layout.color = {folder + "/c.exr", {"R", "G", "B", "A"}};
+  const FrameData data = readFrame(layout, 1);
+  EXPECT_EQ(data.colorSpec.x, 3);
+  EXPECT_EQ(data.colorSpec.y, 5);
+  EXPECT_EQ(data.colorSpec.full_width, 10);
+  EXPECT_EQ(data.colorSpec.full_height, 12);
+  EXPECT_EQ(data.colorSpec.get_string_attribute("taa:shot"), "sq010_sh020");
+  EXPECT_EQ(data.color.width, 4);
+  EXPECT_EQ(data.color.height, 3);
+}
+
+TEST(ReadFrameErrors, MissingColorFrameNamesPathAndFrame) {
+  const std::string folder = scratchFolder();
+  writeSeparateFiles(folder, 1);
+  const Error error = expectError([&] { readFrame(separateFilesLayout(folder), 12); });
+  EXPECT_EQ(error.context().file, folder + "/beauty.0012.exr");
+  EXPECT_EQ(error.context().frame, 12);
+  EXPECT_TRUE(contains(error.what(), folder + "/beauty.0012.exr")) << error.what();
+  EXPECT_TRUE(contains(error.what(), "frame 12")) << error.what();
+}
+
+TEST(ReadFrameErrors, MissingDepthFrameNamesItsPath) {
+  const std::string folder = scratchFolder();
+  writeSeparateFiles(folder, 4);
+  std::filesystem::remove(folder + "/depth.0004.exr");
+  const Error error = expectError([&] { readFrame(separateFilesLayout(folder), 4); });
+  EXPECT_EQ(error.context().file, folder + "/depth.0004.exr");
+  EXPECT_TRUE(contains(error.what(), "depth")) << error.what();
+  EXPECT_TRUE(contains(error.what(), "frame 4")) << error.what();
+}
+
+TEST(ReadFrameErrors, MissingChannelListsMissingAndAvailableNames) {
+  const std::string folder = scratchFolder();
+  writeTestExr(folder + "/render.0001.exr", {"ViewLayer.Combined.R", "ViewLayer.Combined.G",
+                                             "ViewLayer.Combined.B", "ViewLayer.Combined.A",
+                                             "ViewLayer.Depth.Z"},
+               [](int, int) { return 1.0f; });
+  const Error error = expectError([&] { readFrame(cyclesLayout(folder + "/render.####.exr"), 1); });
+  const std::string message = error.what();
+  EXPECT_TRUE(contains(message, "ViewLayer.Vector.X, ViewLayer.Vector.Y")) << message;
+  EXPECT_TRUE(contains(message, "ViewLayer.Combined.R")) << message;
+  EXPECT_TRUE(contains(message, "ViewLayer.Depth.Z")) << message;
+  EXPECT_EQ(error.context().channel, "ViewLayer.Vector.X, ViewLayer.Vector.Y");
+  EXPECT_EQ(error.context().file, folder + "/render.0001.exr");
+  EXPECT_EQ(error.context().frame, 1);
+}
+
+TEST(ReadFrameErrors, DepthSizeDifferentFromColorStatesBothSizes) {
+  const std::string folder = scratchFolder();
+  writeSeparateFiles(folder, 2, /*depthWidth=*/3);
+  const Error error = expectError([&] { readFrame(separateFilesLayout(folder), 2); });
+  const std::string message = error.what();
+  EXPECT_TRUE(contains(message, "3x3")) << message;
+  EXPECT_TRUE(contains(message, "4x3")) << message;
+  EXPECT_TRUE(contains(message, "depth")) << message;
+  EXPECT_EQ(error.context().file, folder + "/depth.0002.exr");
+}
+
+TEST(ReadFrameErrors, MotionSizeDifferentFromColorStatesBothSizes) {
+  const std::string folder = scratchFolder();
+  writeSeparateFiles(folder, 2, 4, /*motionHeight=*/5);
+  const Error error = expectError([&] { readFrame(separateFilesLayout(folder), 2); });
+  const std::string message = error.what();
+  EXPECT_TRUE(contains(message, "4x5")) << message;
+  EXPECT_TRUE(contains(message, "4x3")) << message;
+  EXPECT_TRUE(contains(message, "motion")) << message;
+  EXPECT_EQ(error.context().file, folder + "/mv.0002.exr");
+}
+
+TEST(ReadFrameErrors, MotionWindowOriginDifferentFromColorIsAnError) {
+  const std::string folder = scratchFolder();
+  writeSeparateFiles(folder, 2);
+  OIIO::ImageSpec shifted = makeSpec(4, 3, {"u", "v"});
+  shifted.x = 1;
+  writeImage(folder + "/mv.0002.exr", shifted, std::vector<float>(4 * 3 * 2, 0.0f));
+  const Error error = expectError([&] { readFrame(separateFilesLayout(folder), 2); });
+  EXPECT_TRUE(contains(error.what(), "4x3 at (1, 0)")) << error.what();
+  EXPECT_TRUE(contains(error.what(), "4x3 at (0, 0)")) << error.what();
+}
+
+TEST(ReadFrameErrors, TextFileNamedExrIsRejected) {
+  const std::string folder = scratchFolder();
+  taa::test::writeTextFile(folder + "/c.exr", "this is not an image\n");
+  AovLayout layout;
+  layout.color = {folder + "/c.exr", {"R", "G", "B"}};
+  const Error error = expectError([&] { readFrame(layout, 1); });
+  EXPECT_EQ(error.context().file, folder + "/c.exr");
+  EXPECT_TRUE(contains(error.what(), "OpenEXR")) << error.what();
+}
+
+TEST(ReadFrameErrors, TruncatedExrIsRejected) {
+  const std::string folder = scratchFolder();
+  const std::string path = folder + "/c.exr";
+  // Big enough for many scanline blocks, noisy so that compression cannot shrink it away.
+  writeTestExr(
+      path, {"R", "G", "B", "A"}, [](int p, int c) { return std::sin(float(p * 7 + c * 13)); },
+      64, 64);
+  const auto size = std::filesystem::file_size(path);
+  AovLayout layout;
+  layout.color = {path, {"R", "G", "B", "A"}};
+  // Cut in the pixel data (OIIO opens it, the read fails) and in the header (open fails).
+  std::filesystem::resize_file(path, size / 2);
+  Error error = expectError([&] { readFrame(layout, 1); });
+  EXPECT_EQ(error.context().file, path);
+  EXPECT_EQ(error.context().frame, 1);
+  EXPECT_TRUE(contains(error.what(), "pixels")) << error.what();
+  std::filesystem::resize_file(path, 20);
+  error = expectError([&] { readFrame(layout, 1); });
+  EXPECT_EQ(error.context().file, path);
+}
+
+TEST(ReadFrameErrors, PngAsColorIsRejected) {
+  const std::string folder = scratchFolder();
+  OIIO::ImageSpec spec(4, 3, 3, OIIO::TypeUInt8);
+  writeImage(folder + "/c.png", spec, std::vector<float>(4 * 3 * 3, 0.5f));
+  AovLayout layout;
+  layout.color = {folder + "/c.png", {"R", "G", "B"}};
+  const Error error = expectError([&] { readFrame(layout, 1); });
+  EXPECT_EQ(error.context().file, folder + "/c.png");
+  EXPECT_TRUE(contains(error.what(), "not an OpenEXR file")) << error.what();
+  EXPECT_TRUE(contains(error.what(), "png")) << error.what();
+}
+
+TEST(ReadFrameErrors, PngNamedExrIsRejected) {
+  const std::string folder = scratchFolder();
+  OIIO::ImageSpec spec(4, 3, 3, OIIO::TypeUInt8);
+  writeImage(folder + "/c.png", spec, std::vector<float>(4 * 3 * 3, 0.5f));
+  std::filesystem::rename(folder + "/c.png", folder + "/c.exr");
+  AovLayout layout;
+  layout.color = {folder + "/c.exr", {"R", "G", "B"}};
+  const Error error = expectError([&] { readFrame(layout, 1); });
+  EXPECT_EQ(error.context().file, folder + "/c.exr");
+}
+
+TEST(ReadFrameErrors, WrongChannelCountIsAnError) {
+  const std::string folder = scratchFolder();
+  writeSeparateFiles(folder, 1);
+  AovLayout layout = separateFilesLayout(folder);
+  layout.motion->channels = {"u"};
+  const Error error = expectError([&] { readFrame(layout, 1); });
+  EXPECT_TRUE(contains(error.what(), "motion")) << error.what();
+  layout = separateFilesLayout(folder);
+  layout.color.channels = {"R", "G"};
+  EXPECT_TRUE(contains(expectError([&] { readFrame(layout, 1); }).what(), "color"));
+}
+
+}  // namespace
+}  // namespace taa::io

@@ -1,0 +1,31 @@
+// Helpers for the I/O tests: a fresh scratch folder per test, and small hand-made image files.
+#pragma once
+
+#include <OpenImageIO/imageio.h>
+
+#include <string>
+#include <vector>
+
+namespace taa::test {
+
+// An empty folder for the running test: TAA_TEST_TMPDIR/<suite>.<test>, wiped first.
+std::string scratchFolder();
+
+// A float spec of width x height with the given channel names, data window at the origin.
+OIIO::ImageSpec makeSpec(int width, int height, const std::vector<std::string>& channels);
+
+// Writes `pixels` (interleaved in the spec's channel order, rows top first) with the format
+// the file name implies. Throws std::runtime_error on failure.
+void writeImage(const std::string& path, const OIIO::ImageSpec& spec,
+                const std::vector<float>& pixels);
+
+// Reads all channels of subimage 0 as float; `spec` receives the file's header.
+std::vector<float> readImage(const std::string& path, OIIO::ImageSpec& spec);
+
+// Writes `text` to `path` as is.
+void writeTextFile(const std::string& path, const std::string& text);
+
+// Names in `folder` (not recursive), sorted.
+std::vector<std::string> listFolder(const std::string& folder);
+
+}  // namespace taa::test

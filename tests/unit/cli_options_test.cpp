@@ -1,0 +1,92 @@
+#include <gtest/gtest.h>
+
+#include "cli/cli_options.h"
+#include "taa/error.h"
+
+namespace taa::cli {
+namespace {
+
+std::string errorOf(const std::vector<std::string>& args) {
+  try {
+    parseCommandLine(args);
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(CliOptions, SeparateFilesWithChannels) {
+  const CommandLine cl = parseCommandLine({"beauty.####.exr", "--depth", "depth.####.exr",
+                                           "--motion", "mv.####.exr", "--motion-ch", "R,G",
+                                           "--motion-y", "up", "-o", "out.####.exr", "-d",
+                                           "float", "--compression", "piz", "--gl", "osmesa"});
+  const auto& layout = cl.job.layout;
+  EXPECT_EQ(layout.color.pattern, "beauty.####.exr");
+  EXPECT_EQ(layout.color.channels, (std::vector<std::string>{"R", "G", "B", "A"}));
+  ASSERT_TRUE(layout.depth && layout.motion);
+  EXPECT_EQ(layout.depth->pattern, "depth.####.exr");
+  EXPECT_EQ(layout.depth->channels, std::vector<std::string>{"Z"});
+  EXPECT_EQ(layout.motion->channels, (std::vector<std::string>{"R", "G"}));
+  EXPECT_TRUE(layout.motionConvention.yUp);
+  EXPECT_EQ(cl.job.outputPattern, "out.####.exr");
+  EXPECT_EQ(cl.job.write.pixelType, io::PixelType::Float);
+  EXPECT_EQ(cl.job.write.compression, "piz");
+  EXPECT_EQ(cl.job.backend, gl::Backend::OsMesa);
+}
+
+TEST(CliOptions, NoDepthOrMotionUnlessAsked) {
+  const CommandLine cl = parseCommandLine({"b.#.exr", "-o", "o.#.exr"});
+  EXPECT_FALSE(cl.job.layout.depth);
+  EXPECT_FALSE(cl.job.layout.motion);
+  const CommandLine withChannel = parseCommandLine({"b.#.exr", "--depth-ch", "depth.Z", "-o", "o"});
+  ASSERT_TRUE(withChannel.job.layout.depth);
+  EXPECT_EQ(withChannel.job.layout.depth->pattern, "");  // read from the color file
+}
+
+TEST(CliOptions, CyclesPresetWithOverride) {
+  const CommandLine cl = parseCommandLine({"--preset", "cycles", "--layer", "RenderLayer",
+                                           "r.####.exr", "--depth-ch", "RenderLayer.Mist.Z",
+                                           "-o", "o.####.exr"});
+  const auto& layout = cl.job.layout;
+  EXPECT_EQ(layout.color.channels[0], "RenderLayer.Combined.R");
+  ASSERT_TRUE(layout.depth && layout.motion);
+  EXPECT_EQ(layout.depth->channels, std::vector<std::string>{"RenderLayer.Mist.Z"});
+  EXPECT_EQ(layout.motion->channels,
+            (std::vector<std::string>{"RenderLayer.Vector.X", "RenderLayer.Vector.Y"}));
+  EXPECT_TRUE(layout.motionConvention.yUp);
+}
+
+TEST(CliOptions, ResolveAndJitterOptions) {
+  const CommandLine cl =
+      parseCommandLine({"b.#.exr", "-o", "o.#.exr", "--blend", "0.25", "--jitter-offset", "-1000",
+                        "--jitter-period", "16", "--no-clip", "--no-dilate", "-v"});
+  EXPECT_FLOAT_EQ(cl.job.resolve.blend, 0.25f);
+  EXPECT_EQ(cl.job.resolve.jitter.indexOffset, -1000);
+  EXPECT_EQ(cl.job.resolve.jitter.period, 16);
+  EXPECT_FALSE(cl.job.resolve.clipHistory);
+  EXPECT_FALSE(cl.job.resolve.dilateMotion);
+  EXPECT_EQ(cl.verbosity, Verbosity::Verbose);
+}
+
+TEST(CliOptions, ErrorsNameTheArgument) {
+  EXPECT_NE(errorOf({"b.#.exr", "--gl", "vulkan"}).find("vulkan"), std::string::npos);
+  EXPECT_NE(errorOf({"b.#.exr", "--frobnicate"}).find("--frobnicate"), std::string::npos);
+  EXPECT_NE(errorOf({"b.#.exr", "--blend", "2"}).find("--blend"), std::string::npos);
+  EXPECT_NE(errorOf({"b.#.exr", "--blend", "abc"}).find("abc"), std::string::npos);
+  EXPECT_NE(errorOf({"b.#.exr", "-o"}).find("-o needs a value"), std::string::npos);
+  EXPECT_NE(errorOf({"b.#.exr", "-d", "int8"}).find("int8"), std::string::npos);
+  EXPECT_NE(errorOf({"-o", "x.exr"}).find("no color input"), std::string::npos);
+  EXPECT_NE(errorOf({"b.#.exr", "--color-ch", "R,G"}).find("3 or 4"), std::string::npos);
+}
+
+TEST(CliOptions, HelpListsEveryOptionGroup) {
+  const std::string help = helpText();
+  for (const char* text : {"--frames", "-o PATTERN", "--depth", "--motion", "--preset cycles",
+                           "--jitter", "--blend", "-d half|float", "--compression", "--gl",
+                           "--info", "-v"}) {
+    EXPECT_NE(help.find(text), std::string::npos) << text;
+  }
+}
+
+}  // namespace
+}  // namespace taa::cli
