@@ -162,7 +162,7 @@ TEST_F(TaatoolTest, MissingChannelListsAvailableOnes) {
   auto args = separateArgs(in, dir_ / "r.####.exr");
   args.insert(args.end(), {"--depth-ch", "depth.Z"});
   expectError(run(args), {"depth.Z", "depth.0001.exr", "frame 1", "Z"});
-  EXPECT_TRUE(filesContaining(dir_, "r.").empty());
+  EXPECT_TRUE(filesContaining(dir_, "r.0").empty());
 }
 
 TEST_F(TaatoolTest, DepthOrMotionSizeDifferentFromColor) {

@@ -41,6 +41,8 @@ class Context {
 
   // Binds the context to the calling thread (the constructor leaves it current already).
   virtual void makeCurrent() = 0;
+  // Unbinds the context from the calling thread, so that another thread may make it current.
+  virtual void releaseCurrent() = 0;
 
   const Functions& functions() const { return functions_; }
   const ContextInfo& info() const { return info_; }

@@ -1,1 +1,289 @@
-// placeholder: being written
+#include "gl/objects.h"
+
+#include <cstdio>
+
+#include "gl/shader_expansion.h"
+#include "gl/shader_library.h"
+#include "taa/error.h"
+
+namespace taa::gl {
+namespace {
+
+std::string hexEnum(GLenum value) {
+  char text[16];
+  std::snprintf(text, sizeof text, "0x%04X", value);
+  return text;
+}
+
+const char* glErrorName(GLenum error) {
+  switch (error) {
+    case GL_INVALID_ENUM: return "GL_INVALID_ENUM";
+    case GL_INVALID_VALUE: return "GL_INVALID_VALUE";
+    case GL_INVALID_OPERATION: return "GL_INVALID_OPERATION";
+    case GL_INVALID_FRAMEBUFFER_OPERATION: return "GL_INVALID_FRAMEBUFFER_OPERATION";
+    case GL_OUT_OF_MEMORY: return "GL_OUT_OF_MEMORY";
+    case GL_STACK_UNDERFLOW: return "GL_STACK_UNDERFLOW";
+    case GL_STACK_OVERFLOW: return "GL_STACK_OVERFLOW";
+  }
+  return "unknown GL error";
+}
+
+std::string framebufferStatusName(GLenum status) {
+  switch (status) {
+    case GL_FRAMEBUFFER_UNDEFINED: return "GL_FRAMEBUFFER_UNDEFINED";
+    case GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT: return "GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT";
+    case GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT:
+      return "GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT";
+    case GL_FRAMEBUFFER_UNSUPPORTED: return "GL_FRAMEBUFFER_UNSUPPORTED";
+    case GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE: return "GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE";
+  }
+  return hexEnum(status);
+}
+
+// The pixel-transfer format that goes with a sized internal format.
+GLenum baseFormat(GLenum internalFormat) {
+  switch (internalFormat) {
+    case GL_R8: case GL_R16F: case GL_R32F: return GL_RED;
+    case GL_RG8: case GL_RG16F: case GL_RG32F: return GL_RG;
+    case GL_RGB8: case GL_RGB16F: case GL_RGB32F: return GL_RGB;
+    case GL_RGBA8: case GL_RGBA16F: case GL_RGBA32F: return GL_RGBA;
+  }
+  throw Error("unsupported texture internal format " + hexEnum(internalFormat));
+}
+
+GLenum formatOfComponents(int components) {
+  switch (components) {
+    case 1: return GL_RED;
+    case 2: return GL_RG;
+    case 3: return GL_RGB;
+    case 4: return GL_RGBA;
+  }
+  throw Error("texture upload: " + std::to_string(components) + " components per pixel " +
+              "(expected 1 to 4)");
+}
+
+struct ShaderDeleter {
+  void operator()(const Functions& gl, GLuint id) const { gl.DeleteShader(id); }
+};
+
+std::string shaderLog(const Functions& gl, GLuint shader) {
+  GLint length = 0;
+  gl.GetShaderiv(shader, GL_INFO_LOG_LENGTH, &length);
+  std::string log(static_cast<size_t>(length > 0 ? length : 0), '\0');
+  if (length > 0) gl.GetShaderInfoLog(shader, length, nullptr, log.data());
+  while (!log.empty() && (log.back() == '\0' || log.back() == '\n')) log.pop_back();
+  return log.empty() ? "(the driver gave no log)" : log;
+}
+
+std::string programLog(const Functions& gl, GLuint program) {
+  GLint length = 0;
+  gl.GetProgramiv(program, GL_INFO_LOG_LENGTH, &length);
+  std::string log(static_cast<size_t>(length > 0 ? length : 0), '\0');
+  if (length > 0) gl.GetProgramInfoLog(program, length, nullptr, log.data());
+  while (!log.empty() && (log.back() == '\0' || log.back() == '\n')) log.pop_back();
+  return log.empty() ? "(the driver gave no log)" : log;
+}
+
+Handle<ShaderDeleter> compileShader(const Functions& gl, GLenum stage, const ShaderSource& source) {
+  const char* stageName = stage == GL_VERTEX_SHADER ? "vertex" : "fragment";
+  Handle<ShaderDeleter> shader(&gl, gl.CreateShader(stage));
+  if (!shader) {
+    checkError(gl, "glCreateShader");
+    throw Error(std::string("glCreateShader failed for ") + stageName + " shader \"" +
+                source.name + "\"");
+  }
+  const char* text = source.text.c_str();
+  gl.ShaderSource(shader.id(), 1, &text, nullptr);
+  gl.CompileShader(shader.id());
+  GLint compiled = GL_FALSE;
+  gl.GetShaderiv(shader.id(), GL_COMPILE_STATUS, &compiled);
+  if (!compiled) {
+    const std::vector<std::string> files =
+        source.fileNames.empty() ? std::vector<std::string>{source.name} : source.fileNames;
+    throw Error(std::string(stageName) + " shader \"" + source.name + "\" failed to compile:\n" +
+                annotateShaderLog(shaderLog(gl, shader.id()), source.text, files));
+  }
+  return shader;
+}
+
+}  // namespace
+
+void checkError(const Functions& gl, const char* what) {
+  std::string errors;
+  // Bounded: a lost context may report errors forever.
+  for (int i = 0; i < 8; ++i) {
+    const GLenum error = gl.GetError();
+    if (error == GL_NO_ERROR) break;
+    errors += (errors.empty() ? "" : ", ") + std::string(glErrorName(error));
+  }
+  if (!errors.empty()) throw Error(std::string("OpenGL error after ") + what + ": " + errors);
+}
+
+// --- Texture -----------------------------------------------------------------------------
+
+Texture::Texture(const Functions& gl, int width, int height, GLenum internalFormat,
+                 Filter filter)
+    : width_(width), height_(height) {
+  if (width <= 0 || height <= 0) {
+    throw Error("texture size " + std::to_string(width) + "x" + std::to_string(height) +
+                " is not positive");
+  }
+  const GLenum format = baseFormat(internalFormat);
+  GLuint id = 0;
+  gl.GenTextures(1, &id);
+  handle_ = Handle<TextureDeleter>(&gl, id);
+  gl.BindTexture(GL_TEXTURE_2D, id);
+  const GLint glFilter = filter == Filter::Linear ? GL_LINEAR : GL_NEAREST;
+  gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, glFilter);
+  gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, glFilter);
+  gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);  // complete without mipmaps
+  gl.TexImage2D(GL_TEXTURE_2D, 0, static_cast<GLint>(internalFormat), width, height, 0, format,
+                GL_FLOAT, nullptr);
+  checkError(gl, ("creating a " + std::to_string(width) + "x" + std::to_string(height) +
+                  " texture of format " + hexEnum(internalFormat)).c_str());
+}
+
+void Texture::upload(const float* pixels, int components) {
+  if (!handle_) throw Error("texture upload: the texture was never created");
+  if (!pixels) throw Error("texture upload: no pixel data");
+  const GLenum format = formatOfComponents(components);
+  const Functions& gl = handle_.gl();
+  gl.BindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
+  gl.PixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  gl.BindTexture(GL_TEXTURE_2D, handle_.id());
+  // Row 0 of `pixels` becomes texel row 0: no flip, see the class comment.
+  gl.TexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, width_, height_, format, GL_FLOAT, pixels);
+  checkError(gl, "uploading a texture");
+}
+
+void Texture::bind(int unit) const {
+  const Functions& gl = handle_.gl();
+  gl.ActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(unit));
+  gl.BindTexture(GL_TEXTURE_2D, handle_.id());
+}
+
+// --- Framebuffer -------------------------------------------------------------------------
+
+Framebuffer::Framebuffer(const Functions& gl, const Texture& colorAttachment)
+    : width_(colorAttachment.width()), height_(colorAttachment.height()) {
+  if (!colorAttachment.id()) throw Error("framebuffer: the colour texture was never created");
+  GLuint id = 0;
+  gl.GenFramebuffers(1, &id);
+  handle_ = Handle<FramebufferDeleter>(&gl, id);
+  gl.BindFramebuffer(GL_FRAMEBUFFER, id);
+  gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D,
+                          colorAttachment.id(), 0);
+  const GLenum attachment = GL_COLOR_ATTACHMENT0;
+  gl.DrawBuffers(1, &attachment);  // draw and read buffers are per-framebuffer state
+  gl.ReadBuffer(GL_COLOR_ATTACHMENT0);
+  const GLenum status = gl.CheckFramebufferStatus(GL_FRAMEBUFFER);
+  if (status != GL_FRAMEBUFFER_COMPLETE) {
+    throw Error("framebuffer is incomplete (" + framebufferStatusName(status) + ")");
+  }
+  checkError(gl, "creating a framebuffer");
+}
+
+void Framebuffer::bind() const {
+  const Functions& gl = handle_.gl();
+  gl.BindFramebuffer(GL_FRAMEBUFFER, handle_.id());
+  gl.Viewport(0, 0, width_, height_);
+}
+
+std::vector<float> Framebuffer::readRGBA() const {
+  const Functions& gl = handle_.gl();
+  std::vector<float> pixels(static_cast<size_t>(width_) * static_cast<size_t>(height_) * 4);
+  gl.BindBuffer(GL_PIXEL_PACK_BUFFER, 0);
+  gl.PixelStorei(GL_PACK_ALIGNMENT, 1);
+  gl.BindFramebuffer(GL_READ_FRAMEBUFFER, handle_.id());
+  // Rows come back in the order GL stores them, row 0 first: no flip.
+  gl.ReadPixels(0, 0, width_, height_, GL_RGBA, GL_FLOAT, pixels.data());
+  checkError(gl, "reading a framebuffer back");
+  return pixels;
+}
+
+// --- Program -----------------------------------------------------------------------------
+
+ShaderSource embeddedShaderSource(const std::string& name,
+                                  const std::vector<std::string>& defines) {
+  ShaderSource source;
+  source.name = name;
+  source.text = insertAfterFirstLine(expandedShaderSource(name, &source.fileNames), defines);
+  return source;
+}
+
+Program::Program(const Functions& gl, const std::string& vertexShader,
+                 const std::string& fragmentShader, const std::vector<std::string>& defines)
+    : Program(gl, embeddedShaderSource(vertexShader, defines),
+              embeddedShaderSource(fragmentShader, defines)) {}
+
+Program::Program(const Functions& gl, const ShaderSource& vertex, const ShaderSource& fragment) {
+  Handle<ShaderDeleter> vertexShader = compileShader(gl, GL_VERTEX_SHADER, vertex);
+  Handle<ShaderDeleter> fragmentShader = compileShader(gl, GL_FRAGMENT_SHADER, fragment);
+  handle_ = Handle<ProgramDeleter>(&gl, gl.CreateProgram());
+  if (!handle_) {
+    checkError(gl, "glCreateProgram");
+    throw Error("glCreateProgram failed");
+  }
+  gl.AttachShader(handle_.id(), vertexShader.id());
+  gl.AttachShader(handle_.id(), fragmentShader.id());
+  gl.LinkProgram(handle_.id());
+  // The shaders may go now: attached shaders live as long as the program needs them.
+  GLint linked = GL_FALSE;
+  gl.GetProgramiv(handle_.id(), GL_LINK_STATUS, &linked);
+  if (!linked) {
+    throw Error("program \"" + vertex.name + " + " + fragment.name + "\" failed to link:\n" +
+                programLog(gl, handle_.id()));
+  }
+  checkError(gl, ("building program \"" + vertex.name + " + " + fragment.name + "\"").c_str());
+}
+
+void Program::use() const { handle_.gl().UseProgram(handle_.id()); }
+
+GLint Program::location(const char* name) const {
+  return handle_.gl().GetUniformLocation(handle_.id(), name);
+}
+
+void Program::set(const char* name, int value) const {
+  const GLint at = location(name);
+  if (at >= 0) handle_.gl().ProgramUniform1i(handle_.id(), at, value);
+}
+
+void Program::set(const char* name, float value) const {
+  const GLint at = location(name);
+  if (at >= 0) handle_.gl().ProgramUniform1f(handle_.id(), at, value);
+}
+
+void Program::set(const char* name, float x, float y) const {
+  const GLint at = location(name);
+  if (at >= 0) handle_.gl().ProgramUniform2f(handle_.id(), at, x, y);
+}
+
+void Program::set(const char* name, float x, float y, float z, float w) const {
+  const GLint at = location(name);
+  if (at >= 0) handle_.gl().ProgramUniform4f(handle_.id(), at, x, y, z, w);
+}
+
+void Program::setMatrix4(const char* name, const float* columnMajor16) const {
+  const GLint at = location(name);
+  if (at >= 0) handle_.gl().ProgramUniformMatrix4fv(handle_.id(), at, 1, GL_FALSE, columnMajor16);
+}
+
+// --- FullscreenTriangle ------------------------------------------------------------------
+
+FullscreenTriangle::FullscreenTriangle(const Functions& gl) {
+  GLuint id = 0;
+  gl.GenVertexArrays(1, &id);
+  vao_ = Handle<VertexArrayDeleter>(&gl, id);
+  checkError(gl, "creating the full-screen triangle's vertex array");
+}
+
+void FullscreenTriangle::draw() const {
+  const Functions& gl = vao_.gl();
+  gl.BindVertexArray(vao_.id());
+  gl.DrawArrays(GL_TRIANGLES, 0, 3);
+  checkError(gl, "drawing a full-screen pass");
+}
+
+}  // namespace taa::gl

@@ -1,5 +1,5 @@
 // Move-only RAII wrappers for the GL objects taa uses. Each holds the Functions table of the
-// context that made it and must be destroyed while that context is current.
+// context that made it and must be destroyed while that context is current (and before it).
 #pragma once
 
 #include <string>
@@ -98,7 +98,19 @@ class Framebuffer {
   int width_ = 0, height_ = 0;
 };
 
-// A linked vertex + fragment program built from shaders embedded from glsl/.
+// GLSL text ready to compile ("#version" on its first line), e.g. generated code.
+struct ShaderSource {
+  std::string name;                    // shown in error messages, e.g. "resolve.frag"
+  std::string text;                    // the complete source
+  std::vector<std::string> fileNames;  // `#line` source-string number -> file; empty: {name}
+};
+
+// An embedded file (glsl/) with its includes expanded and `defines` ("#define NAME VALUE")
+// inserted right after its #version line. Throws taa::Error for an unknown name.
+ShaderSource embeddedShaderSource(const std::string& name,
+                                  const std::vector<std::string>& defines = {});
+
+// A linked vertex + fragment program.
 class Program {
  public:
   Program() = default;
@@ -107,9 +119,12 @@ class Program {
   // A compile or link failure throws taa::Error with the driver's log and the shader name.
   Program(const Functions& gl, const std::string& vertexShader, const std::string& fragmentShader,
           const std::vector<std::string>& defines = {});
+  // The same from source text; errors name the ShaderSource and map lines through fileNames.
+  Program(const Functions& gl, const ShaderSource& vertex, const ShaderSource& fragment);
 
   void use() const;
-  // Uniform setters: a name the linker removed (unused) is silently ignored, as GL does.
+  // Uniform setters (glProgramUniform*: the program need not be in use). A name the linker
+  // removed (unused) is silently ignored, as GL does.
   void set(const char* name, int value) const;
   void set(const char* name, float value) const;
   void set(const char* name, float x, float y) const;
