@@ -1,0 +1,53 @@
+// The scene interface of the quality yardstick (DESIGN.md section 7): a scene renders, per
+// frame, a jittered one-sample-per-pixel colour, exact depth and motion, and a supersampled
+// box-filtered truth, all in taa's internal conventions (DESIGN.md section 3).
+#pragma once
+
+#include <string>
+#include <utility>
+
+#include <glm/vec2.hpp>
+
+#include "resolve/jitter.h"
+#include "util/image.h"
+
+namespace taa::scenes {
+
+struct RenderSettings {
+  JitterOptions jitter;          // the jitter of each frame is frameJitter(frame, jitter)
+  int truthSamplesPerAxis = 16;  // truth = mean of N x N stratified samples per pixel, N >= 1
+  int threads = 0;               // worker threads; 0 = one per hardware thread
+};
+
+// One rendered frame. Images are width x height, rows top first.
+struct SceneFrame {
+  int frame = 0;
+  glm::vec2 jitter{0.0f};  // offset of the colour sample from the pixel centre, px, y down
+  Image color;             // RGBA: one point sample at (i + 0.5 + jx, j + 0.5 + jy); A = coverage
+  Image depth;             // 1 channel at the pixel centre: planar distance, +inf where nothing
+  Image motion;            // 2 channels at the pixel centre: previous - current, px, y down
+  Image nextMotion;        // 2 channels at the pixel centre: next - current, px, y down
+  Image truth;             // RGBA: box-filtered pixel average, unjittered
+};
+
+// A scene of fixed raster size. Rendering a frame is independent of any other frame, so frames
+// can be rendered in any order (farm chunks, tests picking single frames).
+class Scene {
+ public:
+  Scene(std::string name, int width, int height)
+      : name_(std::move(name)), width_(width), height_(height) {}
+  virtual ~Scene() = default;
+
+  const std::string& name() const { return name_; }
+  int width() const { return width_; }
+  int height() const { return height_; }
+
+  virtual SceneFrame render(int frame, const RenderSettings& settings) const = 0;
+
+ private:
+  std::string name_;
+  int width_;
+  int height_;
+};
+
+}  // namespace taa::scenes
