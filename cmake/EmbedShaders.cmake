@@ -10,3 +10,15 @@ function(taa_embed_shaders out_cpp)
     COMMENT "Embedding GLSL shaders"
     VERBATIM)
 endfunction()
+
+# Embeds one text file as `const char* <function>()` in <namespace>, declared in <header>.
+function(taa_embed_text out_cpp file namespace function header)
+  add_custom_command(
+    OUTPUT ${out_cpp}
+    COMMAND ${CMAKE_COMMAND} -DOUT=${out_cpp} -DFILE=${file} -DNAMESPACE=${namespace}
+            -DFUNCTION=${function} -DHEADER=${header}
+            -P ${PROJECT_SOURCE_DIR}/cmake/EmbedTextScript.cmake
+    DEPENDS ${file} ${PROJECT_SOURCE_DIR}/cmake/EmbedTextScript.cmake
+    COMMENT "Embedding ${file}"
+    VERBATIM)
+endfunction()

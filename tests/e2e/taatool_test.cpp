@@ -224,6 +224,28 @@ TEST_F(TaatoolTest, InfoReportsAWorkingContextForEachBackend) {
   }
 }
 
+TEST_F(TaatoolTest, BracketsListedAndChosen) {
+  const RunResult list = run({"--list-brackets"});
+  EXPECT_EQ(list.exitCode, 0) << list.err;
+  EXPECT_NE(list.out.find("OCIO config: taa's shipped config"), std::string::npos) << list.out;
+  EXPECT_NE(list.out.find("  taa_reinhard\n"), std::string::npos) << list.out;
+
+  const fs::path in = generate("in", scenes::OutputLayout::Separate, 1, 2);
+  auto args = separateArgs(in, dir_ / "o" / "r.####.exr");
+  args.insert(args.end(), {"--bracket", "taa_reinhard"});
+  const RunResult ok = run(args);
+  EXPECT_EQ(ok.exitCode, 0) << ok.err;
+  EXPECT_TRUE(fs::exists(dir_ / "o" / "r.0002.exr"));
+
+  auto bad = separateArgs(in, dir_ / "bad" / "r.####.exr");
+  bad.insert(bad.end(), {"--bracket", "filmic_nope"});
+  expectError(run(bad), {"filmic_nope", "shipped config"});
+  EXPECT_FALSE(fs::exists(dir_ / "bad"));
+
+  expectError(run({"--list-brackets", "--ocio-config", (dir_ / "missing.ocio").string()}),
+              {"cannot load the OCIO config", "missing.ocio"});
+}
+
 TEST_F(TaatoolTest, HelpAndBadArguments) {
   const RunResult help = run({"--help"});
   EXPECT_EQ(help.exitCode, 0);

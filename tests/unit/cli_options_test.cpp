@@ -68,6 +68,17 @@ TEST(CliOptions, ResolveAndJitterOptions) {
   EXPECT_EQ(cl.verbosity, Verbosity::Verbose);
 }
 
+TEST(CliOptions, BracketOptions) {
+  const CommandLine cl = parseCommandLine({"b.#.exr", "-o", "o.#.exr", "--ocio-config", "c.ocio",
+                                           "--colorspace-in", "acescg", "--bracket", "taa_log2",
+                                           "--colorspace-out", "lin"});
+  EXPECT_EQ(cl.job.resolve.color.ocioConfig, "c.ocio");
+  EXPECT_EQ(cl.job.resolve.color.colorspaceIn, "acescg");
+  EXPECT_EQ(cl.job.resolve.color.bracket, "taa_log2");
+  EXPECT_EQ(cl.job.resolve.color.colorspaceOut, "lin");
+  EXPECT_TRUE(parseCommandLine({"--list-brackets"}).listBrackets);
+}
+
 TEST(CliOptions, ErrorsNameTheArgument) {
   EXPECT_NE(errorOf({"b.#.exr", "--gl", "vulkan"}).find("vulkan"), std::string::npos);
   EXPECT_NE(errorOf({"b.#.exr", "--frobnicate"}).find("--frobnicate"), std::string::npos);

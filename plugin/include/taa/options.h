@@ -3,6 +3,8 @@
 // rebuilds the GL program; the others are uniforms and cost nothing to change.
 #pragma once
 
+#include <string>
+
 #include "taa/version.h"
 
 TAA_NAMESPACE_BEGIN
@@ -22,6 +24,22 @@ struct JitterOptions {
   int period = 0;
 };
 
+// The OpenColorIO tonemap bracket (DESIGN.md section 5): the resolve runs on colour converted
+// from `colorspaceIn` into the `bracket` working space, and its result is converted from the
+// working space into `colorspaceOut`. All fields are [program].
+struct ColorOptions {
+  // An OCIO config file. Empty: $OCIO if set, else taa's shipped config (ocio/config.ocio,
+  // embedded in the library).
+  std::string ocioConfig;
+  // Colorspace (or role) of the input colour.
+  std::string colorspaceIn = "scene_linear";
+  // Working space of the resolve: a colorspace or named transform of the config, or "none"
+  // (no bracket: the resolve runs on input values).
+  std::string bracket = "none";
+  // Colorspace (or role) of the output. Empty: the same as colorspaceIn.
+  std::string colorspaceOut;
+};
+
 struct ResolveOptions {
   // Weight of the current frame in the exponential blend, in (0, 1]. Smaller accumulates more
   // frames (smoother, more ghosting risk); 1 turns accumulation off.
@@ -34,6 +52,8 @@ struct ResolveOptions {
   bool dilateMotion = true;
   // How each frame's samples were offset from pixel centres.
   JitterOptions jitter;
+  // [program] The tonemap bracket around the resolve.
+  ColorOptions color;
 };
 
 TAA_NAMESPACE_END

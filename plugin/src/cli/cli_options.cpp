@@ -109,6 +109,10 @@ CommandLine parseCommandLine(const std::vector<std::string>& args) {
          if (!(blend > 0.0f && blend <= 1.0f)) throw Error("--blend must be in (0, 1], got " + v);
          cl.job.resolve.blend = blend;
        }},
+      {"--ocio-config", [&](const std::string& v) { cl.job.resolve.color.ocioConfig = v; }},
+      {"--colorspace-in", [&](const std::string& v) { cl.job.resolve.color.colorspaceIn = v; }},
+      {"--bracket", [&](const std::string& v) { cl.job.resolve.color.bracket = v; }},
+      {"--colorspace-out", [&](const std::string& v) { cl.job.resolve.color.colorspaceOut = v; }},
       {"-o", [&](const std::string& v) { cl.job.outputPattern = v; }},
       {"-d", [&](const std::string& v) { cl.job.write.pixelType = io::parsePixelType(v); }},
       {"--compression",
@@ -122,6 +126,7 @@ CommandLine parseCommandLine(const std::vector<std::string>& args) {
       {"--help", [&] { cl.help = true; }},
       {"-h", [&] { cl.help = true; }},
       {"--info", [&] { cl.info = true; }},
+      {"--list-brackets", [&] { cl.listBrackets = true; }},
       {"-v", [&] { cl.verbosity = Verbosity::Verbose; }},
       {"-q", [&] { cl.verbosity = Verbosity::Quiet; }},
       {"--no-clip", [&] { cl.job.resolve.clipHistory = false; }},
@@ -141,7 +146,7 @@ CommandLine parseCommandLine(const std::vector<std::string>& args) {
       positional.push_back(arg);
     }
   }
-  if (cl.help || cl.info) return cl;
+  if (cl.help || cl.info || cl.listBrackets) return cl;
 
   if (positional.empty()) throw Error("no color input given (see taatool --help)");
   if (positional.size() > 1) {
@@ -233,6 +238,14 @@ Resolve:
   --blend A                weight of the current frame, in (0, 1] (default 0.1)
   --no-clip                keep history unclipped (diagnosis only: ghosts)
   --no-dilate              take motion at the pixel, not at its closest-depth neighbour
+
+Tonemap bracket (OpenColorIO; the resolve runs in the bracket's working space):
+  --ocio-config PATH       OCIO config (default: $OCIO, else taa's shipped config)
+  --colorspace-in NAME     colorspace or role of the input colour (default scene_linear)
+  --bracket NAME           working space: a colorspace or named transform of the config, or
+                           none (default none)
+  --colorspace-out NAME    colorspace or role of the output (default: the input's)
+  --list-brackets          list the brackets the active config offers
 
 Output:
   -d half|float            output pixel type (default half)

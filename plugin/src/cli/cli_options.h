@@ -13,6 +13,7 @@ enum class Verbosity { Quiet, Normal, Verbose };
 struct CommandLine {
   bool help = false;
   bool info = false;
+  bool listBrackets = false;
   Verbosity verbosity = Verbosity::Normal;
   std::string framesText;  // --frames as given; empty = every frame found on disk
   SequenceJob job;         // everything else, ready to run once frames are known

@@ -3,6 +3,7 @@
 #include <OpenColorIO/OpenColorIO.h>
 #include <OpenImageIO/imageio.h>
 
+#include "color/ocio_bracket.h"
 #include "gl/self_test.h"
 #include "taa/version.h"
 
@@ -25,6 +26,14 @@ int printInfo(gl::Backend backend, const gl::LogSink& log, std::ostream& out) {
       << "OpenImageIO:     " << oiio / 10000 << "." << (oiio / 100) % 100 << "." << oiio % 100
       << "\n";
   return selfTest.passed ? 0 : 1;
+}
+
+void printBrackets(const std::string& ocioConfig, std::ostream& out) {
+  const color::LoadedConfig loaded = color::loadConfig(ocioConfig);
+  out << "OCIO config: " << loaded.description << "\n";
+  for (const std::string& name : color::listBrackets(loaded.config)) {
+    out << "  " << name << "\n";
+  }
 }
 
 }  // namespace taa::cli

@@ -12,4 +12,8 @@ namespace taa::cli {
 // context works, 1 when its self-test fails. Context creation failures throw taa::Error.
 int printInfo(gl::Backend backend, const gl::LogSink& log, std::ostream& out);
 
+// Prints the active OCIO config (the path, $OCIO or the shipped one) and the brackets it offers,
+// one per line. Throws taa::Error for an unreadable config.
+void printBrackets(const std::string& ocioConfig, std::ostream& out);
+
 }  // namespace taa::cli

@@ -167,22 +167,35 @@ void Texture::bind(int unit) const {
 // --- Framebuffer -------------------------------------------------------------------------
 
 Framebuffer::Framebuffer(const Functions& gl, const Texture& colorAttachment)
-    : width_(colorAttachment.width()), height_(colorAttachment.height()) {
-  if (!colorAttachment.id()) throw Error("framebuffer: the colour texture was never created");
+    : Framebuffer(gl, std::vector<const Texture*>{&colorAttachment}) {}
+
+Framebuffer::Framebuffer(const Functions& gl, const std::vector<const Texture*>& colorAttachments) {
+  if (colorAttachments.empty()) throw Error("framebuffer: no colour attachment given");
+  width_ = colorAttachments.front()->width();
+  height_ = colorAttachments.front()->height();
   GLuint id = 0;
   gl.GenFramebuffers(1, &id);
   handle_ = Handle<FramebufferDeleter>(&gl, id);
   gl.BindFramebuffer(GL_FRAMEBUFFER, id);
-  gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D,
-                          colorAttachment.id(), 0);
-  const GLenum attachment = GL_COLOR_ATTACHMENT0;
-  gl.DrawBuffers(1, &attachment);  // draw and read buffers are per-framebuffer state
+  std::vector<GLenum> drawBuffers;
+  for (const Texture* texture : colorAttachments) {
+    if (!texture->id()) throw Error("framebuffer: a colour texture was never created");
+    if (texture->width() != width_ || texture->height() != height_) {
+      throw Error("framebuffer: colour attachments differ in size");
+    }
+    const GLenum attachment = GL_COLOR_ATTACHMENT0 + GLenum(drawBuffers.size());
+    gl.FramebufferTexture2D(GL_FRAMEBUFFER, attachment, GL_TEXTURE_2D, texture->id(), 0);
+    drawBuffers.push_back(attachment);
+  }
+  // Draw and read buffers are per-framebuffer state.
+  gl.DrawBuffers(GLsizei(drawBuffers.size()), drawBuffers.data());
   gl.ReadBuffer(GL_COLOR_ATTACHMENT0);
   const GLenum status = gl.CheckFramebufferStatus(GL_FRAMEBUFFER);
   if (status != GL_FRAMEBUFFER_COMPLETE) {
     throw Error("framebuffer is incomplete (" + framebufferStatusName(status) + ")");
   }
   checkError(gl, "creating a framebuffer");
+  attachments_ = int(drawBuffers.size());
 }
 
 void Framebuffer::bind() const {
@@ -191,12 +204,14 @@ void Framebuffer::bind() const {
   gl.Viewport(0, 0, width_, height_);
 }
 
-std::vector<float> Framebuffer::readRGBA() const {
+std::vector<float> Framebuffer::readRGBA(int index) const {
   const Functions& gl = handle_.gl();
+  if (index < 0 || index >= attachments_) throw Error("framebuffer: no attachment " + std::to_string(index));
   std::vector<float> pixels(static_cast<size_t>(width_) * static_cast<size_t>(height_) * 4);
   gl.BindBuffer(GL_PIXEL_PACK_BUFFER, 0);
   gl.PixelStorei(GL_PACK_ALIGNMENT, 1);
   gl.BindFramebuffer(GL_READ_FRAMEBUFFER, handle_.id());
+  gl.ReadBuffer(GL_COLOR_ATTACHMENT0 + GLenum(index));
   // Rows come back in the order GL stores them, row 0 first: no flip.
   gl.ReadPixels(0, 0, width_, height_, GL_RGBA, GL_FLOAT, pixels.data());
   checkError(gl, "reading a framebuffer back");

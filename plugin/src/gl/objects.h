@@ -80,22 +80,25 @@ class Texture {
   int width_ = 0, height_ = 0;
 };
 
-// A framebuffer object with one colour attachment. Throws taa::Error if incomplete.
+// A framebuffer object with one or more colour attachments of one size; fragment output
+// location i writes attachment i. Throws taa::Error if incomplete.
 class Framebuffer {
  public:
   Framebuffer() = default;
   Framebuffer(const Functions& gl, const Texture& colorAttachment);
+  Framebuffer(const Functions& gl, const std::vector<const Texture*>& colorAttachments);
 
-  // Binds for drawing and sets the viewport to the attachment's size.
+  // Binds for drawing and sets the viewport to the attachments' size.
   void bind() const;
-  // Reads the attachment back as tightly packed RGBA floats, row 0 first.
-  std::vector<float> readRGBA() const;
+  // Reads attachment `index` back as tightly packed RGBA floats, row 0 first.
+  std::vector<float> readRGBA(int index = 0) const;
 
   GLuint id() const { return handle_.id(); }
 
  private:
   Handle<FramebufferDeleter> handle_;
   int width_ = 0, height_ = 0;
+  int attachments_ = 0;
 };
 
 // GLSL text ready to compile ("#version" on its first line), e.g. generated code.

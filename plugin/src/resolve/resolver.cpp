@@ -3,14 +3,16 @@
 #include <string>
 #include <utility>
 
+#include "color/ocio_bracket.h"
+#include "color/ocio_gpu_resources.h"
 #include "gl/objects.h"
 #include "taa/error.h"
 
 namespace taa {
 namespace {
 
-// Texture units of the resolve program. OCIO's LUT textures will be bound after these.
-enum TextureUnit : int { kCurrentUnit = 0, kHistoryUnit, kMotionUnit, kDepthUnit };
+// Texture units of the resolve program. OCIO's LUT textures are bound after these.
+enum TextureUnit : int { kCurrentUnit = 0, kHistoryUnit, kMotionUnit, kDepthUnit, kFirstOcioUnit };
 
 std::vector<std::string> programDefines(const ResolveOptions& options) {
   return {"#define DILATE_MOTION " + std::to_string(options.dilateMotion ? 1 : 0)};
@@ -45,22 +47,41 @@ struct Resolver::Impl {
   ResolveOptions options;
   gl::Program program;
   gl::FullscreenTriangle triangle;
+  std::string programKey;  // defines + bracket cache ID the program was built from
+  color::OcioGpuResources toWorkingLuts, fromWorkingLuts;
 
   // Per-size resources, rebuilt when the frame size changes.
   int width = 0, height = 0;
   gl::Texture current, motion, depth;
-  gl::Texture history[2];
-  gl::Framebuffer historyTarget[2];
+  gl::Texture history[2];  // working space
+  gl::Texture output;      // output colorspace
+  gl::Framebuffer historyTarget[2];  // attachments: history[i], output
   int latest = 0;  // index of the history texture holding the last output
   bool hasHistory = false;
 
   Impl(gl::Context& ctx, const ResolveOptions& opts)
       : context(ctx), gl(ctx.functions()), options(opts), triangle(gl) {
-    buildProgram();
+    buildProgram(options);
   }
 
-  void buildProgram() {
-    program = gl::Program(gl, "fullscreen.vert", "resolve.frag", programDefines(options));
+  // Builds the bracket and, when it or the defines changed, the program.
+  // Throws (leaving the current program in place) when the new options are unusable.
+  void buildProgram(const ResolveOptions& newOptions) {
+    const color::OcioBracket bracket(newOptions.color);
+    std::vector<std::string> defines = programDefines(newOptions);
+    std::string key;
+    for (const auto& d : defines) key += d + "\n";
+    key += bracket.cacheId();
+    if (key == programKey) return;
+    defines.push_back(bracket.glsl());
+    program = gl::Program(gl, gl::embeddedShaderSource("fullscreen.vert"),
+                          gl::embeddedShaderSource("resolve.frag", defines));
+    toWorkingLuts = color::OcioGpuResources(gl, bracket.toWorking(), kFirstOcioUnit);
+    fromWorkingLuts = color::OcioGpuResources(gl, bracket.fromWorking(),
+                                              kFirstOcioUnit + toWorkingLuts.unitCount());
+    toWorkingLuts.setUniforms(program);
+    fromWorkingLuts.setUniforms(program);
+    programKey = key;
   }
 
   void allocate(int w, int h) {
@@ -69,9 +90,10 @@ struct Resolver::Impl {
     current = gl::Texture(gl, w, h, GL_RGBA32F);
     motion = gl::Texture(gl, w, h, GL_RG32F);
     depth = gl::Texture(gl, w, h, GL_R32F);
+    output = gl::Texture(gl, w, h, GL_RGBA32F);
     for (int i = 0; i < 2; ++i) {
       history[i] = gl::Texture(gl, w, h, GL_RGBA32F, gl::Texture::Filter::Linear);
-      historyTarget[i] = gl::Framebuffer(gl, history[i]);
+      historyTarget[i] = gl::Framebuffer(gl, {&history[i], &output});
     }
     hasHistory = false;
   }
@@ -96,6 +118,8 @@ struct Resolver::Impl {
     history[latest].bind(kHistoryUnit);
     motion.bind(kMotionUnit);
     depth.bind(kDepthUnit);
+    toWorkingLuts.bind();
+    fromWorkingLuts.bind();
     program.set("uCurrent", int(kCurrentUnit));
     program.set("uHistory", int(kHistoryUnit));
     program.set("uMotion", int(kMotionUnit));
@@ -112,9 +136,9 @@ struct Resolver::Impl {
     latest = target;
     hasHistory = true;
 
-    Image output(width, height, 4);
-    output.pixels = historyTarget[latest].readRGBA();
-    return output;
+    Image result(width, height, 4);
+    result.pixels = historyTarget[latest].readRGBA(1);
+    return result;
   }
 };
 
@@ -133,9 +157,8 @@ const ResolveOptions& Resolver::options() const { return impl_->options; }
 
 void Resolver::setOptions(const ResolveOptions& options) {
   validateOptions(options);
-  const bool rebuild = options.dilateMotion != impl_->options.dilateMotion;
+  impl_->buildProgram(options);  // a no-op unless a [program] option changed
   impl_->options = options;
-  if (rebuild) impl_->buildProgram();
 }
 
 }  // namespace taa

@@ -1,0 +1,56 @@
+// The OpenColorIO tonemap bracket: two processors (input -> working space, working space ->
+// output) turned into GLSL functions for the resolve program (DESIGN.md section 5).
+#pragma once
+
+#include <OpenColorIO/OpenColorIO.h>
+
+#include <string>
+#include <vector>
+
+#include "taa/options.h"
+
+namespace taa::color {
+
+namespace OCIO = OCIO_NAMESPACE;
+
+// GLSL names of the two functions, each `vec4 name(in vec4 inPixel)`.
+inline constexpr const char* kToWorkingFunction = "taaToWorking";
+inline constexpr const char* kFromWorkingFunction = "taaFromWorking";
+
+// Where the config came from, for messages and --list-brackets.
+struct LoadedConfig {
+  OCIO::ConstConfigRcPtr config;
+  std::string description;  // the path, "$OCIO (path)" or "taa's shipped config"
+};
+
+// Loads the config `ColorOptions::ocioConfig` names (empty: $OCIO, else the shipped one).
+// Throws taa::Error naming the file for an unreadable or invalid config.
+LoadedConfig loadConfig(const std::string& path);
+
+// The bracket names a config offers: its colorspaces (not data spaces) and named transforms.
+std::vector<std::string> listBrackets(const OCIO::ConstConfigRcPtr& config);
+
+class OcioBracket {
+ public:
+  // Builds both processors and their GPU shader descriptions. Throws taa::Error naming the
+  // config and the name for an unknown colorspace, role or bracket, and for a bracket whose
+  // round trip (forward then inverse) does not give its input back on the CPU.
+  explicit OcioBracket(const ColorOptions& options);
+
+  const OCIO::GpuShaderDescRcPtr& toWorking() const { return toWorking_; }
+  const OCIO::GpuShaderDescRcPtr& fromWorking() const { return fromWorking_; }
+  // GLSL defining both functions and their resources, for the resolve fragment shader.
+  std::string glsl() const;
+  // Changes when either processor changes: the resolve program is rebuilt only then.
+  std::string cacheId() const;
+
+  const OCIO::ConstCPUProcessorRcPtr& toWorkingCpu() const { return toWorkingCpu_; }
+  const OCIO::ConstCPUProcessorRcPtr& fromWorkingCpu() const { return fromWorkingCpu_; }
+
+ private:
+  std::string cacheId_;
+  OCIO::GpuShaderDescRcPtr toWorking_, fromWorking_;
+  OCIO::ConstCPUProcessorRcPtr toWorkingCpu_, fromWorkingCpu_;
+};
+
+}  // namespace taa::color
