@@ -13,6 +13,14 @@
 #ifndef DILATE_MOTION
 #define DILATE_MOTION 1
 #endif
+// RECTIFY: 0 none, 1 clamp to the neighbourhood box, 2 clip toward the filtered colour.
+#ifndef RECTIFY
+#define RECTIFY 2
+#endif
+// BOX_SPACE_YCOCG (0/1): build the neighbourhood box in YCoCg rather than RGB.
+#ifndef BOX_SPACE_YCOCG
+#define BOX_SPACE_YCOCG 1
+#endif
 
 uniform sampler2D uCurrent;  // RGBA, nearest: this frame's jittered samples
 uniform sampler2D uHistory;  // RGBA, linear: the previous output
@@ -23,10 +31,25 @@ uniform float uBlend;        // weight of the current frame
 uniform bool uHasHistory;
 uniform bool uHasMotion;
 uniform bool uHasDepth;
-uniform bool uClipHistory;
 
 layout(location = 0) out vec4 outHistory;  // working space, next frame's history
 layout(location = 1) out vec4 outColor;    // output colorspace
+
+// Colour in the space the neighbourhood box is built in, and back.
+vec3 toBoxSpace(vec3 rgb) {
+#if BOX_SPACE_YCOCG
+  return rgbToYCoCg(rgb);
+#else
+  return rgb;
+#endif
+}
+vec3 fromBoxSpace(vec3 c) {
+#if BOX_SPACE_YCOCG
+  return yCoCgToRgb(c);
+#else
+  return c;
+#endif
+}
 
 // This frame's sample at pixel q, in working space.
 vec4 currentSample(ivec2 q) {
@@ -79,9 +102,9 @@ void main() {
       float weight = blackmanHarrisWeight(vec2(dx, dy) + uJitter);
       filtered += weight * sampleColor;
       weightSum += weight;
-      vec3 ycocg = rgbToYCoCg(sampleColor.rgb);
-      boxMin = min(boxMin, ycocg);
-      boxMax = max(boxMax, ycocg);
+      vec3 boxColor = toBoxSpace(sampleColor.rgb);
+      boxMin = min(boxMin, boxColor);
+      boxMax = max(boxMax, boxColor);
       alphaMin = min(alphaMin, sampleColor.a);
       alphaMax = max(alphaMax, sampleColor.a);
     }
@@ -99,10 +122,13 @@ void main() {
   }
 
   vec4 history = texture(uHistory, previousPosition / size);
-  if (uClipHistory) {
-    vec3 target = clamp(rgbToYCoCg(filtered.rgb), boxMin, boxMax);
-    history.rgb = yCoCgToRgb(clipToBox(rgbToYCoCg(history.rgb), target, boxMin, boxMax));
-    history.a = clamp(history.a, alphaMin, alphaMax);
-  }
+#if RECTIFY == 1
+  history.rgb = fromBoxSpace(clamp(toBoxSpace(history.rgb), boxMin, boxMax));
+  history.a = clamp(history.a, alphaMin, alphaMax);
+#elif RECTIFY == 2
+  vec3 target = clamp(toBoxSpace(filtered.rgb), boxMin, boxMax);
+  history.rgb = fromBoxSpace(clipToBox(toBoxSpace(history.rgb), target, boxMin, boxMax));
+  history.a = clamp(history.a, alphaMin, alphaMax);
+#endif
   writeResult(mix(history, filtered, uBlend));
 }

@@ -59,11 +59,13 @@ TEST(CliOptions, CyclesPresetWithOverride) {
 TEST(CliOptions, ResolveAndJitterOptions) {
   const CommandLine cl =
       parseCommandLine({"b.#.exr", "-o", "o.#.exr", "--blend", "0.25", "--jitter-offset", "-1000",
-                        "--jitter-period", "16", "--no-clip", "--no-dilate", "-v"});
+                        "--jitter-period", "16", "--rectify", "clamp", "--box-space", "rgb",
+                        "--no-dilate", "-v"});
   EXPECT_FLOAT_EQ(cl.job.resolve.blend, 0.25f);
   EXPECT_EQ(cl.job.resolve.jitter.indexOffset, -1000);
   EXPECT_EQ(cl.job.resolve.jitter.period, 16);
-  EXPECT_FALSE(cl.job.resolve.clipHistory);
+  EXPECT_EQ(cl.job.resolve.rectify, Rectify::Clamp);
+  EXPECT_EQ(cl.job.resolve.boxSpace, BoxSpace::RGB);
   EXPECT_FALSE(cl.job.resolve.dilateMotion);
   EXPECT_EQ(cl.verbosity, Verbosity::Verbose);
 }

@@ -40,13 +40,21 @@ struct ColorOptions {
   std::string colorspaceOut;
 };
 
+enum class Rectify { None, Clamp, Clip };
+enum class BoxSpace { RGB, YCoCg };
+
 struct ResolveOptions {
   // Weight of the current frame in the exponential blend, in (0, 1]. Smaller accumulates more
   // frames (smoother, more ghosting risk); 1 turns accumulation off.
   float blend = 0.1f;
-  // Clip history toward the current 3x3 neighbourhood's YCoCg bounding box (rejects stale
-  // history on disocclusion and lighting change). Off only for diagnosis.
-  bool clipHistory = true;
+  // [program] How history is brought back inside the current 3x3 neighbourhood's colour box,
+  // which rejects stale history after disocclusion or lighting change:
+  //   Clip  move it toward the filtered current colour until it enters the box (keeps hue)
+  //   Clamp clamp each component to the box (the textbook version; shifts hue)
+  //   None  keep it (diagnosis only: ghosts)
+  Rectify rectify = Rectify::Clip;
+  // [program] Colour space of the neighbourhood box: YCoCg hugs natural colours tighter.
+  BoxSpace boxSpace = BoxSpace::YCoCg;
   // [program] Take the motion vector from the closest-depth pixel of the 3x3 neighbourhood, so
   // that foreground edges carry their own motion into the background's silhouette. Needs depth.
   bool dilateMotion = true;

@@ -113,6 +113,18 @@ CommandLine parseCommandLine(const std::vector<std::string>& args) {
       {"--colorspace-in", [&](const std::string& v) { cl.job.resolve.color.colorspaceIn = v; }},
       {"--bracket", [&](const std::string& v) { cl.job.resolve.color.bracket = v; }},
       {"--colorspace-out", [&](const std::string& v) { cl.job.resolve.color.colorspaceOut = v; }},
+      {"--rectify",
+       [&](const std::string& v) {
+         const std::string mode = choice("--rectify", v, {"clip", "clamp", "none"});
+         cl.job.resolve.rectify = mode == "clip"    ? Rectify::Clip
+                                  : mode == "clamp" ? Rectify::Clamp
+                                                    : Rectify::None;
+       }},
+      {"--box-space",
+       [&](const std::string& v) {
+         cl.job.resolve.boxSpace =
+             choice("--box-space", v, {"ycocg", "rgb"}) == "rgb" ? BoxSpace::RGB : BoxSpace::YCoCg;
+       }},
       {"-o", [&](const std::string& v) { cl.job.outputPattern = v; }},
       {"-d", [&](const std::string& v) { cl.job.write.pixelType = io::parsePixelType(v); }},
       {"--compression",
@@ -129,7 +141,6 @@ CommandLine parseCommandLine(const std::vector<std::string>& args) {
       {"--list-brackets", [&] { cl.listBrackets = true; }},
       {"-v", [&] { cl.verbosity = Verbosity::Verbose; }},
       {"-q", [&] { cl.verbosity = Verbosity::Quiet; }},
-      {"--no-clip", [&] { cl.job.resolve.clipHistory = false; }},
       {"--no-dilate", [&] { cl.job.resolve.dilateMotion = false; }},
   };
 
@@ -236,7 +247,10 @@ Jitter (the sub-pixel offset the renderer used for each frame):
 
 Resolve:
   --blend A                weight of the current frame, in (0, 1] (default 0.1)
-  --no-clip                keep history unclipped (diagnosis only: ghosts)
+  --rectify clip|clamp|none  bring history into the neighbourhood's colour box: clip toward
+                           the filtered colour (default), clamp per component, or none
+                           (diagnosis only: ghosts)
+  --box-space ycocg|rgb    colour space of the neighbourhood box (default ycocg)
   --no-dilate              take motion at the pixel, not at its closest-depth neighbour
 
 Tonemap bracket (OpenColorIO; the resolve runs in the bracket's working space):

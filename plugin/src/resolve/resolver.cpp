@@ -15,7 +15,9 @@ namespace {
 enum TextureUnit : int { kCurrentUnit = 0, kHistoryUnit, kMotionUnit, kDepthUnit, kFirstOcioUnit };
 
 std::vector<std::string> programDefines(const ResolveOptions& options) {
-  return {"#define DILATE_MOTION " + std::to_string(options.dilateMotion ? 1 : 0)};
+  return {"#define DILATE_MOTION " + std::to_string(options.dilateMotion ? 1 : 0),
+          "#define RECTIFY " + std::to_string(int(options.rectify)),
+          "#define BOX_SPACE_YCOCG " + std::to_string(options.boxSpace == BoxSpace::YCoCg ? 1 : 0)};
 }
 
 void checkPlane(const Image* plane, const Image& color, int channels, const char* name) {
@@ -129,7 +131,6 @@ struct Resolver::Impl {
     program.set("uHasHistory", hasHistory ? 1 : 0);
     program.set("uHasMotion", input.motion ? 1 : 0);
     program.set("uHasDepth", input.depth ? 1 : 0);
-    program.set("uClipHistory", options.clipHistory ? 1 : 0);
     triangle.draw();
     gl::checkError(gl, "resolve pass");
 
