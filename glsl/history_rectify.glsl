@@ -14,3 +14,14 @@ vec3 clipToBox(vec3 history, vec3 target, vec3 boxMin, vec3 boxMax) {
   float overshoot = max(reach.x, max(reach.y, reach.z));
   return overshoot > 1.0 ? target + toHistory / overshoot : history;
 }
+
+// Variance box: mean +- gamma standard deviations of the neighbourhood, intersected with its
+// min/max box. Tighter than min/max when one outlier widens the box (Salvi, "An Excursion in
+// Temporal Supersampling", GDC 2016).
+void varianceBox(vec3 sum, vec3 sumOfSquares, float count, float gamma, inout vec3 boxMin,
+                 inout vec3 boxMax) {
+  vec3 mean = sum / count;
+  vec3 sigma = sqrt(max(sumOfSquares / count - mean * mean, vec3(0.0)));
+  boxMin = max(boxMin, mean - gamma * sigma);
+  boxMax = min(boxMax, mean + gamma * sigma);
+}

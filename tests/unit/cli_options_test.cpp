@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include <set>
+
 #include "cli/cli_options.h"
 #include "taa/error.h"
 
@@ -60,13 +62,16 @@ TEST(CliOptions, ResolveAndJitterOptions) {
   const CommandLine cl =
       parseCommandLine({"b.#.exr", "-o", "o.#.exr", "--blend", "0.25", "--jitter-offset", "-1000",
                         "--jitter-period", "16", "--rectify", "clamp", "--box-space", "rgb",
-                        "--no-dilate", "-v"});
+                        "--motion-dilation", "centre", "--reset-frames", "5,9-10",
+                        "--debug-layers", "-v"});
   EXPECT_FLOAT_EQ(cl.job.resolve.blend, 0.25f);
   EXPECT_EQ(cl.job.resolve.jitter.indexOffset, -1000);
   EXPECT_EQ(cl.job.resolve.jitter.period, 16);
   EXPECT_EQ(cl.job.resolve.rectify, Rectify::Clamp);
   EXPECT_EQ(cl.job.resolve.boxSpace, BoxSpace::RGB);
-  EXPECT_FALSE(cl.job.resolve.dilateMotion);
+  EXPECT_EQ(cl.job.resolve.motionDilation, MotionDilation::Centre);
+  EXPECT_EQ(cl.job.resetFrames, (std::set<int>{5, 9, 10}));
+  EXPECT_TRUE(cl.job.debugLayers);
   EXPECT_EQ(cl.verbosity, Verbosity::Verbose);
 }
 
@@ -84,7 +89,9 @@ TEST(CliOptions, BracketOptions) {
 TEST(CliOptions, ErrorsNameTheArgument) {
   EXPECT_NE(errorOf({"b.#.exr", "--gl", "vulkan"}).find("vulkan"), std::string::npos);
   EXPECT_NE(errorOf({"b.#.exr", "--frobnicate"}).find("--frobnicate"), std::string::npos);
-  EXPECT_NE(errorOf({"b.#.exr", "--blend", "2"}).find("--blend"), std::string::npos);
+  EXPECT_NE(errorOf({"b.#.exr", "--blend", "2"}).find("blend"), std::string::npos);
+  EXPECT_NE(errorOf({"b.#.exr", "--rectify", "soft"}).find("variance|clip|clamp|none"),
+            std::string::npos);
   EXPECT_NE(errorOf({"b.#.exr", "--blend", "abc"}).find("abc"), std::string::npos);
   EXPECT_NE(errorOf({"b.#.exr", "-o"}).find("-o needs a value"), std::string::npos);
   EXPECT_NE(errorOf({"b.#.exr", "-d", "int8"}).find("int8"), std::string::npos);

@@ -40,26 +40,96 @@ struct ColorOptions {
   std::string colorspaceOut;
 };
 
-enum class Rectify { None, Clamp, Clip };
+enum class Reconstruction { Centre, BlackmanHarris, Lanczos2 };
+enum class MotionDilation { Centre, Plus, Box3x3 };
+enum class CameraMotion { Vectors, Fill, PreferCamera, Camera };
+enum class HistoryFilter { Bilinear, CatmullRom };
+enum class Rectify { None, Clamp, Clip, VarianceClip };
 enum class BoxSpace { RGB, YCoCg };
+enum class Neighbourhood { Plus5, Box9 };
 
+// The resolve's stages (DESIGN.md section 4), in pipeline order. Defaults are chosen from the
+// quality yardstick (docs/QUALITY.md), not by eye.
 struct ResolveOptions {
+  // --- unjitter
+  // [program] Filter reconstructing the current frame at pixel centres from the 3x3 jittered
+  // samples: Centre (the pixel's own sample, no filter), BlackmanHarris (soft, no ringing),
+  // Lanczos2 (sharper, small negative lobes).
+  Reconstruction reconstruction = Reconstruction::BlackmanHarris;
+  // How each frame's samples were offset from pixel centres.
+  JitterOptions jitter;
+
+  // --- reprojection
+  // [program] Motion taken from the pixel itself, or from the closest-depth pixel of the plus
+  // (5) or 3x3 (9) neighbourhood so foreground edges carry their own motion. Needs depth.
+  MotionDilation motionDilation = MotionDilation::Box3x3;
+  // [program] Motion from depth and the two frames' camera matrices (needs both):
+  //   Vectors       motion vectors only (zero where there is no motion AOV)
+  //   Fill          vectors; camera motion where there are no vectors, or where the vectors are
+  //                 zero on pixels with no geometry (renderers write zero on the sky)
+  //   PreferCamera  as Fill, and camera motion wherever it agrees with the vector within
+  //                 cameraAgreement pixels (exact for static geometry); the vector otherwise
+  //   Camera        camera motion only (static scenes, or no motion AOV)
+  CameraMotion cameraMotion = CameraMotion::Fill;
+  // Pixels; PreferCamera's agreement tolerance. >= 0.
+  float cameraAgreement = 0.5f;
+
+  // --- history
+  // [program] Bilinear (cheap, blurs under motion) or Catmull-Rom from 5 bilinear taps.
+  HistoryFilter historyFilter = HistoryFilter::CatmullRom;
+
+  // --- validation
+  // Relative depth difference between the surface seen now and the one history saw that counts
+  // as disocclusion (history rejected). 0 turns the test off. Typical 0.02 .. 0.2.
+  float depthTolerance = 0.1f;
+  // [program] How history is brought back inside the current neighbourhood's colour box:
+  //   None          keep it (diagnosis only: ghosts)
+  //   Clamp         clamp each component to the min/max box (the textbook version)
+  //   Clip          move it toward the filtered colour until it enters the min/max box
+  //   VarianceClip  clip to mean +- varianceGamma sigma, intersected with the min/max box
+  Rectify rectify = Rectify::VarianceClip;
+  // [program] Colour space of the neighbourhood box: YCoCg hugs natural colours tighter.
+  BoxSpace boxSpace = BoxSpace::YCoCg;
+  // [program] Neighbours forming the box: plus-shaped 5 or 3x3 9.
+  Neighbourhood neighbourhood = Neighbourhood::Box9;
+  // Width of the variance box in standard deviations, > 0. Smaller rejects more (less ghosting,
+  // more flicker). Typical 0.75 .. 1.5.
+  float varianceGamma = 1.0f;
+  // 0..1: on pixels where depth confirms the same surface and motion is slow, keep this much of
+  // the unrectified history, so sub-pixel wires the 3x3 box misses do not fade. Risk: ghosting of
+  // shading changes (moving shadows, reflections) on static geometry.
+  float thinFeatureHold = 0.0f;
+  // Pixels per frame at which the thin-feature hold has faded out completely. > 0.
+  float thinFeatureHoldSpeed = 2.0f;
+
+  // --- blend
   // Weight of the current frame in the exponential blend, in (0, 1]. Smaller accumulates more
   // frames (smoother, more ghosting risk); 1 turns accumulation off.
   float blend = 0.1f;
-  // [program] How history is brought back inside the current 3x3 neighbourhood's colour box,
-  // which rejects stale history after disocclusion or lighting change:
-  //   Clip  move it toward the filtered current colour until it enters the box (keeps hue)
-  //   Clamp clamp each component to the box (the textbook version; shifts hue)
-  //   None  keep it (diagnosis only: ghosts)
-  Rectify rectify = Rectify::Clip;
-  // [program] Colour space of the neighbourhood box: YCoCg hugs natural colours tighter.
-  BoxSpace boxSpace = BoxSpace::YCoCg;
-  // [program] Take the motion vector from the closest-depth pixel of the 3x3 neighbourhood, so
-  // that foreground edges carry their own motion into the background's silhouette. Needs depth.
-  bool dilateMotion = true;
-  // How each frame's samples were offset from pixel centres.
-  JitterOptions jitter;
+  // Weight of the current frame at high speed, in [0, 1]; values <= blend turn it off. Moving
+  // pixels get more of the current frame, since resampled history is softer.
+  float velocityBlend = 0.0f;
+  // Pixels per frame at which velocityBlend is reached. > 0.
+  float velocityScale = 8.0f;
+  // 0..1: where history and current luma agree, lower the current weight by this fraction
+  // (steadier); where they differ, keep blend (responsive).
+  float antiFlicker = 0.0f;
+  // Weight history and current by 1 / (1 + luma) so single bright samples cannot dominate.
+  bool lumaWeighting = false;
+  // Per-pixel sample count: the current weight is at least 1 / (samples so far), so a pixel
+  // that just got valid history (first frames, disocclusion) converges at once.
+  bool sampleCount = true;
+
+  // --- cuts
+  // Fraction of pixels (0..1) whose history is rejected (off-screen or disoccluded) above which
+  // a frame is taken as a cut: it is resolved again with history reset. 0 turns detection off.
+  // Needs depth to see cuts; explicit cuts go in SequenceJob::resetFrames (--reset-frames).
+  float cutDetection = 0.0f;
+
+  // --- output (never fed back into history)
+  // Unsharp-mask amount on the output, >= 0 (0: off). Limited to the neighbours' range.
+  float sharpen = 0.0f;
+
   // [program] The tonemap bracket around the resolve.
   ColorOptions color;
 };

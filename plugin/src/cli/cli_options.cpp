@@ -3,9 +3,11 @@
 #include <cmath>
 #include <functional>
 #include <map>
+#include <sstream>
 
 #include "io/sequence_pattern.h"
 #include "io/sequence_scan.h"
+#include "resolve/option_registry.h"
 #include "taa/error.h"
 
 namespace taa::cli {
@@ -22,18 +24,6 @@ float parseFloat(const std::string& option, const std::string& text) {
   if (used != text.size() || !std::isfinite(value)) {
     throw Error(option + " expects a number, got \"" + text + "\"");
   }
-  return value;
-}
-
-int parseInt(const std::string& option, const std::string& text) {
-  std::size_t used = 0;
-  int value = 0;
-  try {
-    value = std::stoi(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used != text.size()) throw Error(option + " expects an integer, got \"" + text + "\"");
   return value;
 }
 
@@ -89,41 +79,9 @@ CommandLine parseCommandLine(const std::vector<std::string>& args) {
        [&](const std::string& v) {
          layout.depthConvention.noHitAbove = parseFloat("--depth-nohit", v);
        }},
-      {"--jitter",
+      {"--reset-frames",
        [&](const std::string& v) {
-         cl.job.resolve.jitter.source = choice("--jitter", v, {"halton", "none"}) == "halton"
-                                            ? JitterSource::Halton
-                                            : JitterSource::None;
-       }},
-      {"--jitter-offset",
-       [&](const std::string& v) { cl.job.resolve.jitter.indexOffset = parseInt("--jitter-offset", v); }},
-      {"--jitter-period",
-       [&](const std::string& v) {
-         const int period = parseInt("--jitter-period", v);
-         if (period < 0) throw Error("--jitter-period must be 0 or more, got " + v);
-         cl.job.resolve.jitter.period = period;
-       }},
-      {"--blend",
-       [&](const std::string& v) {
-         const float blend = parseFloat("--blend", v);
-         if (!(blend > 0.0f && blend <= 1.0f)) throw Error("--blend must be in (0, 1], got " + v);
-         cl.job.resolve.blend = blend;
-       }},
-      {"--ocio-config", [&](const std::string& v) { cl.job.resolve.color.ocioConfig = v; }},
-      {"--colorspace-in", [&](const std::string& v) { cl.job.resolve.color.colorspaceIn = v; }},
-      {"--bracket", [&](const std::string& v) { cl.job.resolve.color.bracket = v; }},
-      {"--colorspace-out", [&](const std::string& v) { cl.job.resolve.color.colorspaceOut = v; }},
-      {"--rectify",
-       [&](const std::string& v) {
-         const std::string mode = choice("--rectify", v, {"clip", "clamp", "none"});
-         cl.job.resolve.rectify = mode == "clip"    ? Rectify::Clip
-                                  : mode == "clamp" ? Rectify::Clamp
-                                                    : Rectify::None;
-       }},
-      {"--box-space",
-       [&](const std::string& v) {
-         cl.job.resolve.boxSpace =
-             choice("--box-space", v, {"ycocg", "rgb"}) == "rgb" ? BoxSpace::RGB : BoxSpace::YCoCg;
+         for (int frame : io::parseFrameRange(v)) cl.job.resetFrames.insert(frame);
        }},
       {"-o", [&](const std::string& v) { cl.job.outputPattern = v; }},
       {"-d", [&](const std::string& v) { cl.job.write.pixelType = io::parsePixelType(v); }},
@@ -141,7 +99,7 @@ CommandLine parseCommandLine(const std::vector<std::string>& args) {
       {"--list-brackets", [&] { cl.listBrackets = true; }},
       {"-v", [&] { cl.verbosity = Verbosity::Verbose; }},
       {"-q", [&] { cl.verbosity = Verbosity::Quiet; }},
-      {"--no-dilate", [&] { cl.job.resolve.dilateMotion = false; }},
+      {"--debug-layers", [&] { cl.job.debugLayers = true; }},
   };
 
   for (std::size_t i = 0; i < args.size(); ++i) {
@@ -151,6 +109,9 @@ CommandLine parseCommandLine(const std::vector<std::string>& args) {
     } else if (auto option = withValue.find(arg); option != withValue.end()) {
       if (i + 1 >= args.size()) throw Error("option " + arg + " needs a value");
       option->second(args[++i]);
+    } else if (arg.rfind("--", 0) == 0 && isResolveOption(arg.substr(2))) {
+      if (i + 1 >= args.size()) throw Error("option " + arg + " needs a value");
+      setResolveOption(cl.job.resolve, arg.substr(2), args[++i]);
     } else if (arg.size() > 1 && arg[0] == '-') {
       throw Error("unknown option " + arg + " (see taatool --help)");
     } else {
@@ -209,8 +170,46 @@ void resolveFrameList(CommandLine& cl) {
   }
 }
 
+// `words` wrapped to lines of at most `width` columns, each after `indent` spaces.
+std::string wrapped(const std::string& words, std::size_t indent, std::size_t width) {
+  std::string text, line;
+  std::istringstream in(words);
+  for (std::string word; in >> word;) {
+    if (!line.empty() && indent + line.size() + 1 + word.size() > width) {
+      text += std::string(indent, ' ') + line + "\n";
+      line.clear();
+    }
+    line += (line.empty() ? "" : " ") + word;
+  }
+  if (!line.empty()) text += std::string(indent, ' ') + line + "\n";
+  return text;
+}
+
+// The resolve options' part of --help, grouped by topic, from the option registry.
+std::string resolveOptionsHelp() {
+  constexpr std::size_t kColumn = 27, kWidth = 100;
+  std::string text, topic;
+  for (const OptionInfo& o : resolveOptionList()) {
+    if (o.topic != topic) {
+      topic = o.topic;
+      text += (text.empty() ? "" : "\n") + topic + ":\n";
+    }
+    const std::string head = "  --" + o.name + " " + o.values;
+    const std::string help = o.help + " (default " +
+                             (o.defaultValue.empty() ? "\"\"" : o.defaultValue) + ")";
+    std::string body = wrapped(help, kColumn, kWidth);
+    if (head.size() < kColumn) {
+      body.replace(0, head.size(), head);
+    } else {
+      body = head + "\n" + body;
+    }
+    text += body;
+  }
+  return text + "\n";
+}
+
 std::string helpText() {
-  return R"help(taatool -- temporal anti-aliasing resolve for EXR AOV sequences (taa )help"
+  std::string text = R"help(taatool -- temporal anti-aliasing resolve for EXR AOV sequences (taa )help"
          TAA_VERSION_STRING R"help()
 
 Usage:
@@ -219,8 +218,7 @@ Usage:
 
 Sequences:
   COLOR_PATTERN            the jittered beauty sequence. Frame placeholders: '#' (4 digits),
-                           '####' or '@@@@' (one digit per
-                           character), '%04d'
+                           '####' or '@@@@' (one digit per character), '%04d'
   --frames RANGE           frames to resolve: 1-48, 1-48x2, 1-10,20-30 (default: all found)
   -o PATTERN               output sequence (written atomically: temp file, then rename)
 
@@ -240,26 +238,11 @@ Conventions (internal: motion in pixels, y down, pointing to the previous frame)
   --motion-scale S         multiply vectors by S (default 1)
   --depth-nohit V          depth at or above V means nothing was hit (default 1e9)
 
-Jitter (the sub-pixel offset the renderer used for each frame):
-  --jitter halton|none     Halton(2,3) indexed by frame number, or no jitter (default halton)
-  --jitter-offset N        Halton index = frame + N (default 0)
-  --jitter-period P        index cycles through 1..P (default 0: no cycle)
-
-Resolve:
-  --blend A                weight of the current frame, in (0, 1] (default 0.1)
-  --rectify clip|clamp|none  bring history into the neighbourhood's colour box: clip toward
-                           the filtered colour (default), clamp per component, or none
-                           (diagnosis only: ghosts)
-  --box-space ycocg|rgb    colour space of the neighbourhood box (default ycocg)
-  --no-dilate              take motion at the pixel, not at its closest-depth neighbour
-
-Tonemap bracket (OpenColorIO; the resolve runs in the bracket's working space):
-  --ocio-config PATH       OCIO config (default: $OCIO, else taa's shipped config)
-  --colorspace-in NAME     colorspace or role of the input colour (default scene_linear)
-  --bracket NAME           working space: a colorspace or named transform of the config, or
-                           none (default none)
-  --colorspace-out NAME    colorspace or role of the output (default: the input's)
-  --list-brackets          list the brackets the active config offers
+@RESOLVE_OPTIONS@
+Sequences and cuts:
+  --reset-frames LIST      frames that start a new history (cuts): 1040,1100-1101
+  --debug-layers           add layers debug.historyWeight, debug.rejection (0 kept, 1 none,
+                           2 off-screen, 3 disoccluded), debug.velocity.x/y, debug.nonFinite
 
 Output:
   -d half|float            output pixel type (default half)
@@ -268,12 +251,15 @@ Output:
 GL and diagnostics:
   --gl auto|egl|osmesa     OpenGL back end (default auto: EGL, falling back to OSMesa)
   --info                   print GL vendor/renderer/version, OCIO and OIIO versions
+  --list-brackets          list the tonemap brackets the active OCIO config offers
   -v                       one line per frame
   -q                       errors only
   -h, --help               this text
 
 Errors are printed as "taatool ERROR: <what> : <file> (frame N, channel C)"; exit status 1.
 )help";
+  text.replace(text.find("@RESOLVE_OPTIONS@"), 17, resolveOptionsHelp());
+  return text;
 }
 
 }  // namespace taa::cli

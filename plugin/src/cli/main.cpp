@@ -36,6 +36,7 @@ int run(const std::vector<std::string>& args) {
     std::cout << "frame " << report.frame << " (" << report.index + 1 << "/" << report.count
               << "): " << report.inputPath << " -> " << report.outputPath;
     if (report.historyReset) std::cout << " [history reset]";
+    if (report.cutDetected) std::cout << " [cut detected: history reset]";
     if (report.nonFiniteColorValues > 0) {
       std::cout << " [" << report.nonFiniteColorValues << " NaN/Inf color values set to 0]";
     }

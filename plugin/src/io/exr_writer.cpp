@@ -72,6 +72,18 @@ class TemporaryFile {
   bool committed_ = false;
 };
 
+// RGBA followed by the extra channels, interleaved per pixel as the writer wants them.
+std::vector<float> interleave(const Image& rgba, const ExtraChannels& extra) {
+  const int channels = 4 + extra.image.channels;
+  std::vector<float> pixels(std::size_t(rgba.width) * rgba.height * channels);
+  for (std::size_t i = 0, n = std::size_t(rgba.width) * rgba.height; i < n; ++i) {
+    std::copy_n(&rgba.pixels[i * 4], 4, &pixels[i * channels]);
+    std::copy_n(&extra.image.pixels[i * extra.image.channels], extra.image.channels,
+                &pixels[i * channels + 4]);
+  }
+  return pixels;
+}
+
 // ".<name>.taa-tmp-<pid>-<n>.exr": hidden, unique per process and call, and ending in .exr.
 fs::path temporaryPathFor(const fs::path& finalPath) {
   static std::atomic<unsigned> counter{0};
@@ -83,11 +95,12 @@ fs::path temporaryPathFor(const fs::path& finalPath) {
 }
 
 OIIO::ImageSpec makeOutputSpec(const Image& rgba, const OIIO::ImageSpec& templateSpec,
-                               const WriteOptions& options) {
+                               const WriteOptions& options, const ExtraChannels& extra) {
   const OIIO::TypeDesc format =
       options.pixelType == PixelType::Half ? OIIO::TypeHalf : OIIO::TypeFloat;
-  OIIO::ImageSpec spec(rgba.width, rgba.height, 4, format);
+  OIIO::ImageSpec spec(rgba.width, rgba.height, 4 + int(extra.names.size()), format);
   spec.channelnames = {"R", "G", "B", "A"};
+  spec.channelnames.insert(spec.channelnames.end(), extra.names.begin(), extra.names.end());
   spec.alpha_channel = 3;
   const bool hasTemplate = templateSpec.width > 0 && templateSpec.height > 0;
   if (hasTemplate) {
@@ -132,7 +145,7 @@ void validateCompression(const std::string& compression) {
 }
 
 void writeExrAtomic(const std::string& path, const Image& rgba, const OIIO::ImageSpec& templateSpec,
-                    const WriteOptions& options) {
+                    const WriteOptions& options, const ExtraChannels& extra) {
   const ErrorContext context{path, std::nullopt, ""};
   try {
     validateCompression(options.compression);
@@ -141,6 +154,11 @@ void writeExrAtomic(const std::string& path, const Image& rgba, const OIIO::Imag
   }
   if (rgba.channels != 4 || rgba.empty()) {
     throw Error("the image to write must have 4 channels (RGBA) and pixels", context);
+  }
+  if (!extra.names.empty() &&
+      (int(extra.names.size()) != extra.image.channels || extra.image.width != rgba.width ||
+       extra.image.height != rgba.height)) {
+    throw Error("extra channels must match their names and the image size", context);
   }
   const bool hasTemplate = templateSpec.width > 0 && templateSpec.height > 0;
   if (hasTemplate && (rgba.width != templateSpec.width || rgba.height != templateSpec.height)) {
@@ -161,7 +179,7 @@ void writeExrAtomic(const std::string& path, const Image& rgba, const OIIO::Imag
   }
 
   TemporaryFile temporary(temporaryPathFor(finalPath));
-  const OIIO::ImageSpec spec = makeOutputSpec(rgba, templateSpec, options);
+  const OIIO::ImageSpec spec = makeOutputSpec(rgba, templateSpec, options, extra);
   // Ask for the EXR writer by name: the final path's extension must not choose the format.
   auto output = OIIO::ImageOutput::create("openexr");
   if (!output) throw Error("cannot create an OpenEXR writer: " + OIIO::geterror(), context);
@@ -171,7 +189,10 @@ void writeExrAtomic(const std::string& path, const Image& rgba, const OIIO::Imag
     throw Error(what + ": " + reason, context);
   };
   if (!output->open(temporary.path().string(), spec)) fail("cannot open for writing");
-  if (!output->write_image(OIIO::TypeFloat, rgba.pixels.data())) fail("cannot write pixels");
+  const std::vector<float> withExtra = extra.names.empty() ? std::vector<float>()
+                                                             : interleave(rgba, extra);
+  const float* pixels = extra.names.empty() ? rgba.pixels.data() : withExtra.data();
+  if (!output->write_image(OIIO::TypeFloat, pixels)) fail("cannot write pixels");
   if (!output->close() || output->has_error()) fail("cannot finish writing");
   output.reset();
 

@@ -1,5 +1,7 @@
 #include "io/frame_reader.h"
 
+#include <glm/gtc/type_ptr.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <deque>
@@ -150,8 +152,9 @@ std::string aovPath(const AovSource& source, const std::string& colorPath, int f
   return source.pattern.empty() ? colorPath : expandFramePattern(source.pattern, frame);
 }
 
-Image toRgba(const Image& color, int& nonFiniteCount) {
+Image toRgba(const Image& color, int& nonFiniteCount, Image& nonFiniteMask) {
   Image rgba(color.width, color.height, 4);
+  nonFiniteMask = Image(color.width, color.height, 1);
   const std::size_t pixelCount = std::size_t(color.width) * color.height;
   for (std::size_t pixel = 0; pixel < pixelCount; ++pixel) {
     float* out = &rgba.pixels[pixel * 4];
@@ -163,6 +166,7 @@ Image toRgba(const Image& color, int& nonFiniteCount) {
       } else {
         out[c] = 0.0f;
         ++nonFiniteCount;
+        nonFiniteMask.pixels[pixel] = 1.0f;
       }
     }
   }
@@ -187,6 +191,19 @@ void convertMotion(Image& motion, const MotionConvention& convention) {
   }
 }
 
+// The header's camera, if it has both matrices. EXR matrices act on row vectors (p' = p M) and
+// are stored row by row; read as GLM's column-major storage, that is exactly the transpose,
+// which acts on column vectors as GLM expects.
+std::optional<FrameCamera> headerCamera(const OIIO::ImageSpec& spec) {
+  const OIIO::ParamValue* toCamera = spec.find_attribute("worldToCamera", OIIO::TypeMatrix44);
+  const OIIO::ParamValue* toNdc = spec.find_attribute("worldToNDC", OIIO::TypeMatrix44);
+  if (!toCamera || !toNdc) return std::nullopt;
+  FrameCamera camera;
+  camera.worldToCamera = glm::dmat4(glm::make_mat4(static_cast<const float*>(toCamera->data())));
+  camera.worldToNdc = glm::dmat4(glm::make_mat4(static_cast<const float*>(toNdc->data())));
+  return camera;
+}
+
 }  // namespace
 
 FrameData readFrame(const AovLayout& layout, int frame) {
@@ -205,7 +222,12 @@ FrameData readFrame(const AovLayout& layout, int frame) {
   OpenExr& colorFile = files.get(data.colorPath, "color");
   data.colorSpec = colorFile.input->spec();
   data.color = toRgba(readChannels(colorFile, layout.color.channels, "color", frame),
-                      data.nonFiniteColorValues);
+                      data.nonFiniteColorValues, data.nonFiniteMask);
+  data.camera = headerCamera(data.colorSpec);
+  data.window = {data.colorSpec.x - data.colorSpec.full_x, data.colorSpec.y - data.colorSpec.full_y,
+                 data.colorSpec.full_width > 0 ? data.colorSpec.full_width : data.colorSpec.width,
+                 data.colorSpec.full_height > 0 ? data.colorSpec.full_height
+                                                : data.colorSpec.height};
 
   if (layout.depth) {
     OpenExr& file = files.get(aovPath(*layout.depth, data.colorPath, frame), "depth");

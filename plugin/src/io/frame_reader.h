@@ -5,7 +5,10 @@
 
 #include <string>
 
+#include <optional>
+
 #include "io/aov_layout.h"
+#include "resolve/camera.h"
 #include "util/image.h"
 
 namespace taa::io {
@@ -16,6 +19,9 @@ struct FrameData {
   Image depth;   // 1 channel, planar, +inf = no hit; empty if the layout has no depth
   Image motion;  // 2 channels, pixels, y down, to previous; empty if the layout has no motion
   int nonFiniteColorValues = 0;   // how many color values were NaN/Inf and scrubbed to 0
+  Image nonFiniteMask;            // 1 channel: 1 where a color value was scrubbed, else 0
+  std::optional<FrameCamera> camera;  // from the color header's worldToCamera + worldToNDC
+  RasterWindow window;            // the data window's place in the display window
   OIIO::ImageSpec colorSpec;      // the color file's header: windows and metadata for output
   std::string colorPath;
 };

@@ -1,5 +1,6 @@
 #include "resolve/resolver.h"
 
+#include <optional>
 #include <string>
 #include <utility>
 
@@ -11,13 +12,34 @@
 namespace taa {
 namespace {
 
-// Texture units of the resolve program. OCIO's LUT textures are bound after these.
-enum TextureUnit : int { kCurrentUnit = 0, kHistoryUnit, kMotionUnit, kDepthUnit, kFirstOcioUnit };
+// Texture units of the resolve pass; OCIO's LUT textures follow. The output pass uses unit 0
+// for its input and the same first OCIO unit for the inverse bracket's LUTs.
+enum TextureUnit : int {
+  kCurrentUnit = 0,
+  kHistoryUnit,
+  kHistoryStateUnit,
+  kMotionUnit,
+  kDepthUnit,
+  kPreviousDepthUnit,
+  kFirstOcioUnit
+};
+constexpr int kResolvedUnit = 0;
 
-std::vector<std::string> programDefines(const ResolveOptions& options) {
-  return {"#define DILATE_MOTION " + std::to_string(options.dilateMotion ? 1 : 0),
-          "#define RECTIFY " + std::to_string(int(options.rectify)),
-          "#define BOX_SPACE_YCOCG " + std::to_string(options.boxSpace == BoxSpace::YCoCg ? 1 : 0)};
+// Attachments of the resolve pass (locations in resolve.frag).
+enum ResolveAttachment : int { kHistoryAttachment = 0, kStateAttachment, kDebugAttachment };
+
+std::string define(const char* name, int value) {
+  return std::string("#define ") + name + " " + std::to_string(value);
+}
+
+std::vector<std::string> resolveDefines(const ResolveOptions& o) {
+  return {define("RECONSTRUCTION", int(o.reconstruction)),
+          define("MOTION_DILATION", int(o.motionDilation)),
+          define("CAMERA_MOTION", int(o.cameraMotion)),
+          define("HISTORY_FILTER", int(o.historyFilter)),
+          define("RECTIFY", int(o.rectify)),
+          define("BOX_SPACE_YCOCG", o.boxSpace == BoxSpace::YCoCg ? 1 : 0),
+          define("NEIGHBOURHOOD", o.neighbourhood == Neighbourhood::Plus5 ? 5 : 9)};
 }
 
 void checkPlane(const Image* plane, const Image& color, int channels, const char* name) {
@@ -35,10 +57,36 @@ void checkPlane(const Image* plane, const Image& color, int channels, const char
   }
 }
 
-void validateOptions(const ResolveOptions& options) {
-  if (!(options.blend > 0.0f && options.blend <= 1.0f)) {
-    throw Error("blend must be in (0, 1], got " + std::to_string(options.blend));
+void requireRange(float value, float lo, float hi, const char* name) {
+  if (!(value >= lo && value <= hi)) {
+    throw Error(std::string(name) + " must be in [" + std::to_string(lo) + ", " +
+                std::to_string(hi) + "], got " + std::to_string(value));
   }
+}
+
+void validateOptions(const ResolveOptions& o) {
+  if (!(o.blend > 0.0f && o.blend <= 1.0f)) {
+    throw Error("blend must be in (0, 1], got " + std::to_string(o.blend));
+  }
+  requireRange(o.velocityBlend, 0.0f, 1.0f, "velocity blend");
+  requireRange(o.antiFlicker, 0.0f, 1.0f, "anti-flicker");
+  requireRange(o.thinFeatureHold, 0.0f, 1.0f, "thin-feature hold");
+  requireRange(o.cutDetection, 0.0f, 1.0f, "cut detection");
+  requireRange(o.depthTolerance, 0.0f, 1e6f, "depth tolerance");
+  requireRange(o.sharpen, 0.0f, 1e6f, "sharpen");
+  requireRange(o.cameraAgreement, 0.0f, 1e6f, "camera agreement");
+  if (!(o.varianceGamma > 0.0f)) throw Error("variance gamma must be > 0");
+  if (!(o.velocityScale > 0.0f)) throw Error("velocity scale must be > 0");
+  if (!(o.thinFeatureHoldSpeed > 0.0f)) throw Error("thin-feature hold speed must be > 0");
+}
+
+// Fraction of pixels whose debug reason says history was rejected (off-screen, disoccluded).
+double rejectedFraction(const std::vector<float>& debug) {
+  std::size_t rejected = 0, count = debug.size() / 4;
+  for (std::size_t i = 0; i < count; ++i) {
+    if (debug[4 * i + 1] >= float(Rejection::OffScreen)) ++rejected;
+  }
+  return count ? double(rejected) / double(count) : 0.0;
 }
 
 }  // namespace
@@ -47,42 +95,59 @@ struct Resolver::Impl {
   gl::Context& context;
   const gl::Functions& gl;
   ResolveOptions options;
-  gl::Program program;
   gl::FullscreenTriangle triangle;
-  std::string programKey;  // defines + bracket cache ID the program was built from
+
+  // Programs and the bracket's GL resources, rebuilt when programKey changes.
+  std::string programKey;
+  gl::Program resolveProgram, outputProgram;
   color::OcioGpuResources toWorkingLuts, fromWorkingLuts;
 
   // Per-size resources, rebuilt when the frame size changes.
   int width = 0, height = 0;
-  gl::Texture current, motion, depth;
-  gl::Texture history[2];  // working space
-  gl::Texture output;      // output colorspace
-  gl::Framebuffer historyTarget[2];  // attachments: history[i], output
-  int latest = 0;  // index of the history texture holding the last output
+  gl::Texture current, motion, debug, output;
+  gl::Texture depth[2];         // this frame's and the previous frame's, alternating
+  gl::Texture history[2];       // working space, alternating
+  gl::Texture historyState[2];  // sample counts, alternating with history
+  gl::Framebuffer resolveTarget[2];
+  gl::Framebuffer outputTarget;
+  int latest = 0;        // index of the history holding the last result
+  int latestDepth = 0;   // index of the depth texture holding the last frame's depth
   bool hasHistory = false;
+  bool hasPreviousDepth = false;
+  std::optional<FrameCamera> previousCamera;
+
+  bool debugOutput = false;
+  Image lastDebug;
+  bool lastFrameWasCut = false;
 
   Impl(gl::Context& ctx, const ResolveOptions& opts)
       : context(ctx), gl(ctx.functions()), options(opts), triangle(gl) {
-    buildProgram(options);
+    buildPrograms(options);
   }
 
-  // Builds the bracket and, when it or the defines changed, the program.
-  // Throws (leaving the current program in place) when the new options are unusable.
-  void buildProgram(const ResolveOptions& newOptions) {
+  // Builds the bracket and, when it or the defines changed, the programs. Throws (leaving the
+  // current programs in place) when the new options are unusable.
+  void buildPrograms(const ResolveOptions& newOptions) {
     const color::OcioBracket bracket(newOptions.color);
-    std::vector<std::string> defines = programDefines(newOptions);
+    std::vector<std::string> defines = resolveDefines(newOptions);
     std::string key;
     for (const auto& d : defines) key += d + "\n";
     key += bracket.cacheId();
     if (key == programKey) return;
-    defines.push_back(bracket.glsl());
-    program = gl::Program(gl, gl::embeddedShaderSource("fullscreen.vert"),
-                          gl::embeddedShaderSource("resolve.frag", defines));
-    toWorkingLuts = color::OcioGpuResources(gl, bracket.toWorking(), kFirstOcioUnit);
-    fromWorkingLuts = color::OcioGpuResources(gl, bracket.fromWorking(),
-                                              kFirstOcioUnit + toWorkingLuts.unitCount());
-    toWorkingLuts.setUniforms(program);
-    fromWorkingLuts.setUniforms(program);
+    defines.push_back(bracket.toWorking()->getShaderText());
+    gl::Program newResolve(gl, gl::embeddedShaderSource("fullscreen.vert"),
+                           gl::embeddedShaderSource("resolve.frag", defines));
+    gl::Program newOutput(gl, gl::embeddedShaderSource("fullscreen.vert"),
+                          gl::embeddedShaderSource("output.frag",
+                                                   {bracket.fromWorking()->getShaderText()}));
+    color::OcioGpuResources newToWorking(gl, bracket.toWorking(), kFirstOcioUnit);
+    color::OcioGpuResources newFromWorking(gl, bracket.fromWorking(), kFirstOcioUnit);
+    newToWorking.setUniforms(newResolve);
+    newFromWorking.setUniforms(newOutput);
+    resolveProgram = std::move(newResolve);
+    outputProgram = std::move(newOutput);
+    toWorkingLuts = std::move(newToWorking);
+    fromWorkingLuts = std::move(newFromWorking);
     programKey = key;
   }
 
@@ -91,13 +156,76 @@ struct Resolver::Impl {
     height = h;
     current = gl::Texture(gl, w, h, GL_RGBA32F);
     motion = gl::Texture(gl, w, h, GL_RG32F);
-    depth = gl::Texture(gl, w, h, GL_R32F);
+    debug = gl::Texture(gl, w, h, GL_RGBA32F);
     output = gl::Texture(gl, w, h, GL_RGBA32F);
     for (int i = 0; i < 2; ++i) {
+      depth[i] = gl::Texture(gl, w, h, GL_R32F);
       history[i] = gl::Texture(gl, w, h, GL_RGBA32F, gl::Texture::Filter::Linear);
-      historyTarget[i] = gl::Framebuffer(gl, {&history[i], &output});
+      historyState[i] = gl::Texture(gl, w, h, GL_R32F);
+      resolveTarget[i] = gl::Framebuffer(gl, {&history[i], &historyState[i], &debug});
     }
+    outputTarget = gl::Framebuffer(gl, output);
     hasHistory = false;
+    hasPreviousDepth = false;
+  }
+
+  void setResolveUniforms(const ResolveInput& input, bool useCamera) {
+    const gl::Program& p = resolveProgram;
+    p.set("uCurrent", int(kCurrentUnit));
+    p.set("uHistory", int(kHistoryUnit));
+    p.set("uHistoryState", int(kHistoryStateUnit));
+    p.set("uMotion", int(kMotionUnit));
+    p.set("uDepth", int(kDepthUnit));
+    p.set("uPreviousDepth", int(kPreviousDepthUnit));
+    p.set("uJitter", input.jitter.x, input.jitter.y);
+    p.set("uHasMotion", input.motion ? 1 : 0);
+    p.set("uHasDepth", input.depth ? 1 : 0);
+    p.set("uHasPreviousDepth", hasPreviousDepth ? 1 : 0);
+    p.set("uHasCamera", useCamera ? 1 : 0);
+    if (useCamera) {
+      const ReprojectionMatrices m =
+          reprojectionMatrices(*input.camera, *previousCamera, input.window, input.ndc);
+      p.setMatrix4("uRasterToCamera", &m.rasterToCamera[0][0]);
+      p.setMatrix4("uCameraToPreviousRaster", &m.cameraToPreviousRaster[0][0]);
+      p.setMatrix4("uCameraToPreviousCamera", &m.cameraToPreviousCamera[0][0]);
+    }
+    p.set("uCameraAgreement", options.cameraAgreement);
+    p.set("uBlend", options.blend);
+    p.set("uVelocityBlend", options.velocityBlend);
+    p.set("uVelocityScale", options.velocityScale);
+    p.set("uAntiFlicker", options.antiFlicker);
+    p.set("uLumaWeighting", options.lumaWeighting ? 1 : 0);
+    p.set("uSampleCount", options.sampleCount ? 1 : 0);
+    p.set("uVarianceGamma", options.varianceGamma);
+    p.set("uDepthTolerance", options.depthTolerance);
+    p.set("uThinHold", options.thinFeatureHold);
+    p.set("uThinHoldSpeed", options.thinFeatureHoldSpeed);
+  }
+
+  void resolvePass(int target, int currentDepth) {
+    resolveTarget[target].bind();
+    resolveProgram.use();
+    resolveProgram.set("uHasHistory", hasHistory ? 1 : 0);
+    current.bind(kCurrentUnit);
+    history[latest].bind(kHistoryUnit);
+    historyState[latest].bind(kHistoryStateUnit);
+    motion.bind(kMotionUnit);
+    depth[currentDepth].bind(kDepthUnit);
+    depth[1 - currentDepth].bind(kPreviousDepthUnit);
+    toWorkingLuts.bind();
+    triangle.draw();
+    gl::checkError(gl, "resolve pass");
+  }
+
+  void outputPass(int resolved) {
+    outputTarget.bind();
+    outputProgram.use();
+    outputProgram.set("uResolved", kResolvedUnit);
+    outputProgram.set("uSharpen", options.sharpen);
+    history[resolved].bind(kResolvedUnit);
+    fromWorkingLuts.bind();
+    triangle.draw();
+    gl::checkError(gl, "output pass");
   }
 
   Image resolve(const ResolveInput& input) {
@@ -109,36 +237,42 @@ struct Resolver::Impl {
     checkPlane(input.motion, color, 2, "motion");
     if (color.width != width || color.height != height) allocate(color.width, color.height);
 
+    const int currentDepth = 1 - latestDepth;
     current.upload(color.pixels.data(), 4);
     if (input.motion) motion.upload(input.motion->pixels.data(), 2);
-    if (input.depth) depth.upload(input.depth->pixels.data(), 1);
+    if (input.depth) depth[currentDepth].upload(input.depth->pixels.data(), 1);
+    const bool useCamera = hasHistory && input.camera && previousCamera;
+    setResolveUniforms(input, useCamera);
 
     const int target = 1 - latest;
-    historyTarget[target].bind();
-    program.use();
-    current.bind(kCurrentUnit);
-    history[latest].bind(kHistoryUnit);
-    motion.bind(kMotionUnit);
-    depth.bind(kDepthUnit);
-    toWorkingLuts.bind();
-    fromWorkingLuts.bind();
-    program.set("uCurrent", int(kCurrentUnit));
-    program.set("uHistory", int(kHistoryUnit));
-    program.set("uMotion", int(kMotionUnit));
-    program.set("uDepth", int(kDepthUnit));
-    program.set("uJitter", input.jitter.x, input.jitter.y);
-    program.set("uBlend", options.blend);
-    program.set("uHasHistory", hasHistory ? 1 : 0);
-    program.set("uHasMotion", input.motion ? 1 : 0);
-    program.set("uHasDepth", input.depth ? 1 : 0);
-    triangle.draw();
-    gl::checkError(gl, "resolve pass");
+    resolvePass(target, currentDepth);
+    lastFrameWasCut = false;
+    bool debugRead = false;
+    if (options.cutDetection > 0.0f && hasHistory) {
+      lastDebug = Image(width, height, 4);
+      lastDebug.pixels = resolveTarget[target].readRGBA(kDebugAttachment);
+      debugRead = true;
+      if (rejectedFraction(lastDebug.pixels) > options.cutDetection) {
+        hasHistory = false;  // a cut: resolve this frame again from scratch
+        resolvePass(target, currentDepth);
+        lastFrameWasCut = true;
+        debugRead = false;
+      }
+    }
+    if (debugOutput && !debugRead) {
+      lastDebug = Image(width, height, 4);
+      lastDebug.pixels = resolveTarget[target].readRGBA(kDebugAttachment);
+    }
+    outputPass(target);
 
     latest = target;
+    latestDepth = currentDepth;
     hasHistory = true;
+    hasPreviousDepth = input.depth != nullptr;
+    previousCamera = input.camera ? std::optional<FrameCamera>(*input.camera) : std::nullopt;
 
     Image result(width, height, 4);
-    result.pixels = historyTarget[latest].readRGBA(1);
+    result.pixels = outputTarget.readRGBA();
     return result;
   }
 };
@@ -152,14 +286,24 @@ Resolver::~Resolver() = default;
 
 Image Resolver::resolve(const ResolveInput& input) { return impl_->resolve(input); }
 
-void Resolver::resetHistory() { impl_->hasHistory = false; }
+void Resolver::resetHistory() {
+  impl_->hasHistory = false;
+  impl_->hasPreviousDepth = false;
+  impl_->previousCamera.reset();
+}
 
 const ResolveOptions& Resolver::options() const { return impl_->options; }
 
 void Resolver::setOptions(const ResolveOptions& options) {
   validateOptions(options);
-  impl_->buildProgram(options);  // a no-op unless a [program] option changed
+  impl_->buildPrograms(options);  // a no-op unless a [program] option changed
   impl_->options = options;
 }
+
+void Resolver::setDebugOutput(bool enabled) { impl_->debugOutput = enabled; }
+
+const Image& Resolver::lastDebug() const { return impl_->lastDebug; }
+
+bool Resolver::lastFrameWasCut() const { return impl_->lastFrameWasCut; }
 
 }  // namespace taa

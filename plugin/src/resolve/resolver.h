@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "gl/context.h"
+#include "resolve/camera.h"
 #include "taa/options.h"
 #include "util/image.h"
 
@@ -15,10 +16,18 @@ namespace taa {
 // One frame's inputs, in internal conventions (DESIGN.md section 3), all the same size.
 struct ResolveInput {
   const Image* color = nullptr;   // RGBA, required
-  const Image* depth = nullptr;   // 1 channel, optional (enables motion dilation)
-  const Image* motion = nullptr;  // 2 channels, optional (absent = static scene)
+  const Image* depth = nullptr;   // 1 channel, optional (dilation, disocclusion, camera motion)
+  const Image* motion = nullptr;  // 2 channels, optional (absent = camera motion or static)
   glm::vec2 jitter{0.0f};         // this frame's sample offset, pixels, y down
+  const FrameCamera* camera = nullptr;  // optional: enables camera motion with the previous one
+  RasterWindow window;            // where the pixels sit in the display window (for the camera)
+  NdcConvention ndc = NdcConvention::ZeroOneYDown;
 };
+
+// Per-pixel diagnostics of the last frame (setDebugOutput): RGBA = (weight given to history,
+// rejection reason, velocity x, velocity y). Reasons: 0 history kept, 1 no history (first frame,
+// reset, cut), 2 off-screen, 3 disoccluded (depth).
+enum class Rejection { Kept = 0, NoHistory = 1, OffScreen = 2, Disoccluded = 3 };
 
 class Resolver {
  public:
@@ -38,7 +47,14 @@ class Resolver {
 
   const ResolveOptions& options() const;
   // Options that only change uniforms take effect on the next frame; [program] ones rebuild.
+  // Throws (keeping the old options) when the new ones are unusable, e.g. an unknown bracket.
   void setOptions(const ResolveOptions& options);
+
+  // Keep each frame's diagnostics for lastDebug() (one more read-back per frame).
+  void setDebugOutput(bool enabled);
+  const Image& lastDebug() const;
+  // True when cut detection reset history on the last frame.
+  bool lastFrameWasCut() const;
 
  private:
   struct Impl;

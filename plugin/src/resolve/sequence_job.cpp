@@ -1,5 +1,6 @@
 #include "resolve/sequence_job.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <set>
 
@@ -37,6 +38,19 @@ std::string canonical(const std::string& path) {
   return ec ? path : result.string();
 }
 
+// The resolver's diagnostics and the input's NaN/Inf mask as extra output channels.
+io::ExtraChannels debugChannels(const Image& debug, const Image& nonFiniteMask) {
+  io::ExtraChannels extra;
+  extra.names = {"debug.historyWeight", "debug.rejection", "debug.velocity.x", "debug.velocity.y",
+                 "debug.nonFinite"};
+  extra.image = Image(debug.width, debug.height, 5);
+  for (std::size_t i = 0, n = std::size_t(debug.width) * debug.height; i < n; ++i) {
+    std::copy_n(&debug.pixels[4 * i], 4, &extra.image.pixels[5 * i]);
+    extra.image.pixels[5 * i + 4] = nonFiniteMask.empty() ? 0.0f : nonFiniteMask.pixels[i];
+  }
+  return extra;
+}
+
 }  // namespace
 
 void validateSequenceJob(const SequenceJob& job) {
@@ -69,6 +83,7 @@ void runSequenceJob(const SequenceJob& job, const JobCallbacks& callbacks) {
   validateSequenceJob(job);
   auto context = gl::Context::create(job.backend, callbacks.log);
   Resolver resolver(*context, job.resolve);
+  resolver.setDebugOutput(job.debugLayers);
 
   const int count = static_cast<int>(job.frames.size());
   for (int index = 0; index < count; ++index) {
@@ -78,7 +93,8 @@ void runSequenceJob(const SequenceJob& job, const JobCallbacks& callbacks) {
     report.count = count;
     report.frame = frame;
     // Motion vectors point to frame - 1: any other predecessor makes history meaningless.
-    report.historyReset = index == 0 || job.frames[index - 1] != frame - 1;
+    report.historyReset =
+        index == 0 || job.frames[index - 1] != frame - 1 || job.resetFrames.count(frame) > 0;
     if (report.historyReset) resolver.resetHistory();
 
     io::FrameData data = io::readFrame(job.layout, frame);
@@ -87,6 +103,9 @@ void runSequenceJob(const SequenceJob& job, const JobCallbacks& callbacks) {
     input.depth = data.depth.empty() ? nullptr : &data.depth;
     input.motion = data.motion.empty() ? nullptr : &data.motion;
     input.jitter = frameJitter(frame, job.resolve.jitter);
+    input.camera = data.camera ? &*data.camera : nullptr;
+    input.window = data.window;
+    input.ndc = job.ndc;
     Image output;
     try {
       output = resolver.resolve(input);
@@ -94,12 +113,15 @@ void runSequenceJob(const SequenceJob& job, const JobCallbacks& callbacks) {
       throw Error(e.description(), {data.colorPath, frame, e.context().channel});
     }
 
+    report.cutDetected = resolver.lastFrameWasCut();
     report.inputPath = data.colorPath;
     report.outputPath = io::expandFramePattern(job.outputPattern, frame);
     report.nonFiniteColorValues = data.nonFiniteColorValues;
     OIIO::ImageSpec spec = data.colorSpec;
     spec.attribute("taa:version", TAA_VERSION_STRING);
-    io::writeExrAtomic(report.outputPath, output, spec, job.write);
+    io::writeExrAtomic(report.outputPath, output, spec, job.write,
+                       job.debugLayers ? debugChannels(resolver.lastDebug(), data.nonFiniteMask)
+                                       : io::ExtraChannels{});
     if (callbacks.frameDone) callbacks.frameDone(report);
   }
 }

@@ -3,12 +3,14 @@
 #pragma once
 
 #include <functional>
+#include <set>
 #include <string>
 #include <vector>
 
 #include "gl/context.h"
 #include "io/aov_layout.h"
 #include "io/exr_writer.h"
+#include "resolve/camera.h"
 #include "taa/options.h"
 
 namespace taa {
@@ -20,6 +22,9 @@ struct SequenceJob {
   io::WriteOptions write;
   ResolveOptions resolve;
   gl::Backend backend = gl::Backend::Auto;
+  std::set<int> resetFrames;   // frames that start a new history (cuts)
+  bool debugLayers = false;    // write the resolver's diagnostics as extra layers
+  NdcConvention ndc = NdcConvention::ZeroOneYDown;  // of the headers' worldToNDC
 };
 
 struct FrameReport {
@@ -28,7 +33,8 @@ struct FrameReport {
   int frame = 0;
   std::string inputPath, outputPath;
   int nonFiniteColorValues = 0;
-  bool historyReset = false;  // the frame started a new history (first frame or a gap)
+  bool historyReset = false;  // the frame started a new history (first frame, gap, reset frame)
+  bool cutDetected = false;   // cut detection reset history on this frame
 };
 
 struct JobCallbacks {

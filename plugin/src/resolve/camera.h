@@ -1,0 +1,45 @@
+// Camera matrices of a frame and the reprojection matrices the resolve shader needs
+// (glsl/camera_reprojection.glsl). All matrices here use GLM's column-vector convention; the
+// EXR header's row-vector matrices are transposed on load (io/frame_reader).
+#pragma once
+
+#include <glm/mat4x4.hpp>
+
+namespace taa {
+
+// How a renderer's normalized device coordinates cover the display window.
+enum class NdcConvention {
+  ZeroOneYDown,    // x, y in [0, 1], (0, 0) at the top-left corner (RenderMan's NDC)
+  MinusOneOneYUp,  // x, y in [-1, 1], y up (OpenGL's NDC)
+};
+
+struct FrameCamera {
+  glm::dmat4 worldToCamera{1.0};  // to a left-handed camera space looking down +z
+  glm::dmat4 worldToNdc{1.0};     // to homogeneous NDC (divide by w)
+};
+
+// Where the image's pixels sit in the display window the NDC refers to.
+struct RasterWindow {
+  int dataX = 0, dataY = 0;                  // data window origin minus display window origin
+  int displayWidth = 0, displayHeight = 0;   // display window size
+};
+
+struct ReprojectionMatrices {
+  glm::mat4 rasterToCamera;          // (raster x, raster y, ndc z, 1) -> homogeneous camera space
+  glm::mat4 cameraToPreviousRaster;  // camera space -> previous (raster x, raster y, ndc z, w)
+  glm::mat4 cameraToPreviousCamera;  // camera space -> previous camera space
+};
+
+// Affine map from raster (data window pixels, y down, z passed through) to NDC.
+glm::dmat4 ndcFromRaster(const RasterWindow& window, NdcConvention convention);
+
+ReprojectionMatrices reprojectionMatrices(const FrameCamera& current, const FrameCamera& previous,
+                                          const RasterWindow& window, NdcConvention convention);
+
+// The motion (pixels, y down, to the previous frame) of a static surface seen at raster
+// position (x, y) at planar depth `depth`: the CPU twin of cameraMotion() in the shader.
+glm::dvec2 cameraMotion(const FrameCamera& current, const FrameCamera& previous,
+                        const RasterWindow& window, NdcConvention convention, glm::dvec2 position,
+                        double depth);
+
+}  // namespace taa

@@ -1,0 +1,303 @@
+#include "resolve/option_registry.h"
+
+#include <cmath>
+#include <functional>
+#include <map>
+#include <sstream>
+
+#include "taa/error.h"
+
+namespace taa {
+namespace {
+
+using Setter = std::function<void(ResolveOptions&, const std::string&)>;
+using Getter = std::function<std::string(const ResolveOptions&)>;
+
+struct Entry {
+  OptionInfo info;
+  Setter set;
+  Getter get;
+};
+
+[[noreturn]] void reject(const std::string& name, const std::string& value,
+                         const std::string& accepts) {
+  throw Error("option " + name + " expects " + accepts + ", got \"" + value + "\"");
+}
+
+float parseNumber(const std::string& name, const std::string& value, float lo, float hi) {
+  std::size_t used = 0;
+  float number = 0.0f;
+  try {
+    number = std::stof(value, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  std::ostringstream range;
+  range << "a number in [" << lo << ", " << hi << "]";
+  if (used != value.size() || !(number >= lo && number <= hi)) reject(name, value, range.str());
+  return number;
+}
+
+int parseInteger(const std::string& name, const std::string& value, int lo) {
+  std::size_t used = 0;
+  int number = 0;
+  try {
+    number = std::stoi(value, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used != value.size() || number < lo) {
+    reject(name, value, lo == INT32_MIN ? "an integer" : "an integer >= " + std::to_string(lo));
+  }
+  return number;
+}
+
+std::string formatNumber(float v) {
+  std::ostringstream text;
+  text << v;
+  return text.str();
+}
+
+// An option whose value is one of a fixed list of names, each mapped to an enum value.
+template <typename Enum>
+Entry enumOption(OptionInfo info, std::vector<std::pair<std::string, Enum>> names,
+                 Enum ResolveOptions::*field) {
+  std::string accepted;
+  for (const auto& [text, value] : names) accepted += (accepted.empty() ? "" : "|") + text;
+  info.values = accepted;
+  Entry e{info, {}, {}};
+  e.set = [names, field, accepted, name = info.name](ResolveOptions& o, const std::string& v) {
+    for (const auto& [text, value] : names) {
+      if (text == v) {
+        o.*field = value;
+        return;
+      }
+    }
+    reject(name, v, "one of " + accepted);
+  };
+  e.get = [names, field](const ResolveOptions& o) {
+    for (const auto& [text, value] : names) {
+      if (o.*field == value) return text;
+    }
+    return std::string("?");
+  };
+  return e;
+}
+
+Entry numberOption(OptionInfo info, float lo, float hi, float ResolveOptions::*field) {
+  info.values = formatNumber(lo) + ".." + (std::isinf(hi) ? std::string("") : formatNumber(hi));
+  Entry e{info, {}, {}};
+  e.set = [field, lo, hi, name = info.name](ResolveOptions& o, const std::string& v) {
+    o.*field = parseNumber(name, v, lo, hi);
+  };
+  e.get = [field](const ResolveOptions& o) { return formatNumber(o.*field); };
+  return e;
+}
+
+Entry switchOption(OptionInfo info, bool ResolveOptions::*field) {
+  info.values = "on|off";
+  Entry e{info, {}, {}};
+  e.set = [field, name = info.name](ResolveOptions& o, const std::string& v) {
+    if (v == "on" || v == "1") {
+      o.*field = true;
+    } else if (v == "off" || v == "0") {
+      o.*field = false;
+    } else {
+      reject(name, v, "on or off");
+    }
+  };
+  e.get = [field](const ResolveOptions& o) { return std::string(o.*field ? "on" : "off"); };
+  return e;
+}
+
+Entry textOption(OptionInfo info, std::string ColorOptions::*field) {
+  info.values = "name";
+  Entry e{info, {}, {}};
+  e.set = [field](ResolveOptions& o, const std::string& v) { o.color.*field = v; };
+  e.get = [field](const ResolveOptions& o) { return o.color.*field; };
+  return e;
+}
+
+const float kNoLimit = INFINITY;
+
+std::vector<Entry> makeEntries() {
+  std::vector<Entry> entries;
+  entries.push_back(enumOption<Reconstruction>(
+      {"reconstruction", "Unjitter", "", "", "filter rebuilding each frame at pixel centres: "
+       "blackman-harris is soft, lanczos2 sharper with slight ringing, centre takes the pixel's "
+       "own sample"},
+      {{"blackman-harris", Reconstruction::BlackmanHarris},
+       {"lanczos2", Reconstruction::Lanczos2},
+       {"centre", Reconstruction::Centre}},
+      &ResolveOptions::reconstruction));
+  {
+    Entry e{{"jitter", "Unjitter", "halton|none", "", "the renderer's per-frame sample offset: "
+             "Halton(2,3) indexed by frame number, or none"}, {}, {}};
+    e.set = [](ResolveOptions& o, const std::string& v) {
+      if (v == "halton") {
+        o.jitter.source = JitterSource::Halton;
+      } else if (v == "none") {
+        o.jitter.source = JitterSource::None;
+      } else {
+        reject("jitter", v, "one of halton|none");
+      }
+    };
+    e.get = [](const ResolveOptions& o) {
+      return std::string(o.jitter.source == JitterSource::Halton ? "halton" : "none");
+    };
+    entries.push_back(e);
+  }
+  {
+    Entry e{{"jitter-offset", "Unjitter", "integer", "", "Halton index = frame + offset"}, {}, {}};
+    e.set = [](ResolveOptions& o, const std::string& v) {
+      o.jitter.indexOffset = parseInteger("jitter-offset", v, INT32_MIN);
+    };
+    e.get = [](const ResolveOptions& o) { return std::to_string(o.jitter.indexOffset); };
+    entries.push_back(e);
+  }
+  {
+    Entry e{{"jitter-period", "Unjitter", "integer >= 0", "",
+             "0: the index grows; P: it cycles through 1..P (engines use 8 or 16)"}, {}, {}};
+    e.set = [](ResolveOptions& o, const std::string& v) {
+      o.jitter.period = parseInteger("jitter-period", v, 0);
+    };
+    e.get = [](const ResolveOptions& o) { return std::to_string(o.jitter.period); };
+    entries.push_back(e);
+  }
+  entries.push_back(enumOption<MotionDilation>(
+      {"motion-dilation", "Reprojection", "", "", "take motion from the closest-depth pixel of "
+       "the 3x3 (box) or plus neighbourhood, so edges carry the foreground's motion; needs depth"},
+      {{"box", MotionDilation::Box3x3}, {"plus", MotionDilation::Plus},
+       {"centre", MotionDilation::Centre}},
+      &ResolveOptions::motionDilation));
+  entries.push_back(enumOption<CameraMotion>(
+      {"camera-motion", "Reprojection", "", "", "motion from depth and camera matrices: fill "
+       "uses it where vectors are missing or zero on the sky, prefer wherever it agrees with the "
+       "vector, camera everywhere, vectors never"},
+      {{"fill", CameraMotion::Fill}, {"prefer", CameraMotion::PreferCamera},
+       {"camera", CameraMotion::Camera}, {"vectors", CameraMotion::Vectors}},
+      &ResolveOptions::cameraMotion));
+  entries.push_back(numberOption({"camera-agreement", "Reprojection", "", "",
+                                  "pixels within which camera-motion prefer trusts the camera"},
+                                 0.0f, kNoLimit, &ResolveOptions::cameraAgreement));
+  entries.push_back(enumOption<HistoryFilter>(
+      {"history-filter", "History", "", "", "resampling of history: catmull-rom stays sharp "
+       "under motion, bilinear blurs a little more every frame"},
+      {{"catmull-rom", HistoryFilter::CatmullRom}, {"bilinear", HistoryFilter::Bilinear}},
+      &ResolveOptions::historyFilter));
+  entries.push_back(numberOption({"depth-tolerance", "Validation", "", "",
+                                  "relative depth change that rejects history as disoccluded "
+                                  "(0: off); lower rejects more"},
+                                 0.0f, kNoLimit, &ResolveOptions::depthTolerance));
+  entries.push_back(enumOption<Rectify>(
+      {"rectify", "Validation", "", "", "bring history into the neighbourhood's colour box: "
+       "variance clip (tightest), clip toward the filtered colour, clamp per component, none "
+       "(ghosts)"},
+      {{"variance", Rectify::VarianceClip}, {"clip", Rectify::Clip}, {"clamp", Rectify::Clamp},
+       {"none", Rectify::None}},
+      &ResolveOptions::rectify));
+  entries.push_back(enumOption<BoxSpace>(
+      {"box-space", "Validation", "", "", "colour space of the neighbourhood box"},
+      {{"ycocg", BoxSpace::YCoCg}, {"rgb", BoxSpace::RGB}}, &ResolveOptions::boxSpace));
+  entries.push_back(enumOption<Neighbourhood>(
+      {"neighbourhood", "Validation", "", "", "pixels forming the colour box: 3x3 (9) or plus (5)"},
+      {{"9", Neighbourhood::Box9}, {"5", Neighbourhood::Plus5}}, &ResolveOptions::neighbourhood));
+  entries.push_back(numberOption({"variance-gamma", "Validation", "", "",
+                                  "width of the variance box in standard deviations; smaller "
+                                  "ghosts less and flickers more"},
+                                 0.01f, kNoLimit, &ResolveOptions::varianceGamma));
+  entries.push_back(numberOption({"thin-hold", "Validation", "", "",
+                                  "keep this much unrectified history where depth confirms the "
+                                  "surface and motion is slow: saves sub-pixel wires, may ghost "
+                                  "shading changes"},
+                                 0.0f, 1.0f, &ResolveOptions::thinFeatureHold));
+  entries.push_back(numberOption({"thin-hold-speed", "Validation", "", "",
+                                  "pixels per frame at which the thin-feature hold fades out"},
+                                 0.01f, kNoLimit, &ResolveOptions::thinFeatureHoldSpeed));
+  entries.push_back(numberOption({"blend", "Blend", "", "",
+                                  "weight of the current frame; smaller is smoother and slower "
+                                  "to react"},
+                                 0.001f, 1.0f, &ResolveOptions::blend));
+  entries.push_back(numberOption({"velocity-blend", "Blend", "", "",
+                                  "weight of the current frame at high speed (<= blend: off): "
+                                  "sharper moving pixels, less accumulation there"},
+                                 0.0f, 1.0f, &ResolveOptions::velocityBlend));
+  entries.push_back(numberOption({"velocity-scale", "Blend", "", "",
+                                  "pixels per frame at which velocity-blend is reached"},
+                                 0.01f, kNoLimit, &ResolveOptions::velocityScale));
+  entries.push_back(numberOption({"anti-flicker", "Blend", "", "",
+                                  "where history and current luma agree, lower the current "
+                                  "weight by this fraction: steadier, slower to settle"},
+                                 0.0f, 1.0f, &ResolveOptions::antiFlicker));
+  entries.push_back(switchOption({"luma-weighting", "Blend", "", "",
+                                  "weight samples by 1/(1+luma) against HDR fireflies; dims "
+                                  "highlights' contribution"},
+                                 &ResolveOptions::lumaWeighting));
+  entries.push_back(switchOption({"sample-count", "Blend", "", "",
+                                  "current weight at least 1/samples: new and disoccluded "
+                                  "pixels converge at once"},
+                                 &ResolveOptions::sampleCount));
+  entries.push_back(numberOption({"cut-detection", "Cuts", "", "",
+                                  "fraction of rejected pixels that marks a cut and resets "
+                                  "history (0: off; needs depth)"},
+                                 0.0f, 1.0f, &ResolveOptions::cutDetection));
+  entries.push_back(numberOption({"sharpen", "Output", "", "",
+                                  "unsharp mask on the output only, limited to the neighbours' "
+                                  "range"},
+                                 0.0f, kNoLimit, &ResolveOptions::sharpen));
+  entries.push_back(textOption({"ocio-config", "Tonemap bracket", "", "",
+                                "OCIO config (empty: $OCIO, else taa's shipped config)"},
+                               &ColorOptions::ocioConfig));
+  entries.push_back(textOption({"colorspace-in", "Tonemap bracket", "", "",
+                                "colorspace or role of the input colour"},
+                               &ColorOptions::colorspaceIn));
+  entries.push_back(textOption({"bracket", "Tonemap bracket", "", "",
+                                "working space of the resolve: a colorspace or named transform, "
+                                "or none"},
+                               &ColorOptions::bracket));
+  entries.push_back(textOption({"colorspace-out", "Tonemap bracket", "", "",
+                                "colorspace or role of the output (empty: the input's)"},
+                               &ColorOptions::colorspaceOut));
+  const ResolveOptions defaults;
+  for (Entry& e : entries) e.info.defaultValue = e.get(defaults);
+  return entries;
+}
+
+const std::vector<Entry>& entries() {
+  static const std::vector<Entry> all = makeEntries();
+  return all;
+}
+
+const Entry* findEntry(const std::string& name) {
+  for (const Entry& e : entries()) {
+    if (e.info.name == name) return &e;
+  }
+  return nullptr;
+}
+
+}  // namespace
+
+const std::vector<OptionInfo>& resolveOptionList() {
+  static const std::vector<OptionInfo> list = [] {
+    std::vector<OptionInfo> infos;
+    for (const Entry& e : entries()) infos.push_back(e.info);
+    return infos;
+  }();
+  return list;
+}
+
+bool isResolveOption(const std::string& name) { return findEntry(name) != nullptr; }
+
+void setResolveOption(ResolveOptions& options, const std::string& name, const std::string& value) {
+  const Entry* entry = findEntry(name);
+  if (!entry) throw Error("unknown resolve option \"" + name + "\"");
+  entry->set(options, value);
+}
+
+std::string resolveOptionValue(const ResolveOptions& options, const std::string& name) {
+  const Entry* entry = findEntry(name);
+  if (!entry) throw Error("unknown resolve option \"" + name + "\"");
+  return entry->get(options);
+}
+
+}  // namespace taa
