@@ -9,10 +9,11 @@ uniform mat4 uCameraToPreviousRaster;
 uniform mat4 uCameraToPreviousCamera;
 
 // The camera-space point seen at raster position `position` at planar depth `depth` (w = 0: a
-// direction, for depth = +inf). Unprojects two points of the pixel's ray and walks it to z = depth.
+// direction, for depth = +inf). Unprojects two points of the pixel's ray and walks it to z = depth;
+// NDC z 0.25 and 0.75 stay finite for standard, infinite-far and reversed-Z projections alike.
 vec4 cameraPoint(vec2 position, float depth) {
-  vec4 a = uRasterToCamera * vec4(position, 0.0, 1.0);
-  vec4 b = uRasterToCamera * vec4(position, 1.0, 1.0);
+  vec4 a = uRasterToCamera * vec4(position, 0.25, 1.0);
+  vec4 b = uRasterToCamera * vec4(position, 0.75, 1.0);
   vec3 near = a.xyz / a.w;
   vec3 far = b.xyz / b.w;
   vec3 along = far - near;

@@ -3,6 +3,8 @@
 #include <glm/gtc/matrix_inverse.hpp>
 #include <glm/vec4.hpp>
 
+#include <cmath>
+
 namespace taa {
 
 glm::dmat4 ndcFromRaster(const RasterWindow& window, NdcConvention convention) {
@@ -42,13 +44,16 @@ glm::dvec2 cameraMotion(const FrameCamera& current, const FrameCamera& previous,
   const glm::dmat4 cameraToWorld = glm::inverse(current.worldToCamera);
   const glm::dmat4 rasterToCamera =
       glm::inverse(current.worldToNdc * cameraToWorld) * ndcFromRasterM;
-  const glm::dvec4 a = rasterToCamera * glm::dvec4(position, 0.0, 1.0);
-  const glm::dvec4 b = rasterToCamera * glm::dvec4(position, 1.0, 1.0);
+  const glm::dvec4 a = rasterToCamera * glm::dvec4(position, 0.25, 1.0);
+  const glm::dvec4 b = rasterToCamera * glm::dvec4(position, 0.75, 1.0);
   const glm::dvec3 nearPoint = glm::dvec3(a) / a.w, farPoint = glm::dvec3(b) / b.w;
   const glm::dvec3 along = farPoint - nearPoint;
-  const glm::dvec3 point = nearPoint + along * ((depth - nearPoint.z) / along.z);
+  // At infinite depth (no hit) only the ray's direction matters: a point at infinity, w = 0.
+  const glm::dvec4 point =
+      std::isinf(depth) ? glm::dvec4(along * (along.z < 0.0 ? -1.0 : 1.0), 0.0)
+                        : glm::dvec4(nearPoint + along * ((depth - nearPoint.z) / along.z), 1.0);
   const glm::dvec4 previousRaster =
-      glm::inverse(ndcFromRasterM) * previous.worldToNdc * cameraToWorld * glm::dvec4(point, 1.0);
+      glm::inverse(ndcFromRasterM) * previous.worldToNdc * cameraToWorld * point;
   return glm::dvec2(previousRaster) / previousRaster.w - position;
 }
 
