@@ -1,6 +1,8 @@
 #include <gtest/gtest.h>
 
+#include <fstream>
 #include <set>
+#include <sstream>
 
 #include "cli/cli_options.h"
 #include "taa/error.h"
@@ -106,6 +108,19 @@ TEST(CliOptions, HelpListsEveryOptionGroup) {
                            "--info", "-v"}) {
     EXPECT_NE(help.find(text), std::string::npos) << text;
   }
+}
+
+TEST(CliOptions, ReadmeTableIsTheRegistry) {
+  std::ifstream readme(TAA_SOURCE_DIR "/README.md");
+  std::stringstream text;
+  text << readme.rdbuf();
+  const std::string s = text.str();
+  const std::string begin = "<!-- options:begin -->\n", end = "<!-- options:end -->";
+  const auto from = s.find(begin), to = s.find(end);
+  ASSERT_NE(from, std::string::npos);
+  ASSERT_NE(to, std::string::npos);
+  EXPECT_EQ(s.substr(from + begin.size(), to - from - begin.size()), optionsMarkdownTable())
+      << "regenerate the README table with: taatool --list-options";
 }
 
 }  // namespace

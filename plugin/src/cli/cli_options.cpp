@@ -97,6 +97,7 @@ CommandLine parseCommandLine(const std::vector<std::string>& args) {
       {"-h", [&] { cl.help = true; }},
       {"--info", [&] { cl.info = true; }},
       {"--list-brackets", [&] { cl.listBrackets = true; }},
+      {"--list-options", [&] { cl.listOptions = true; }},
       {"-v", [&] { cl.verbosity = Verbosity::Verbose; }},
       {"-q", [&] { cl.verbosity = Verbosity::Quiet; }},
       {"--debug-layers", [&] { cl.job.debugLayers = true; }},
@@ -118,7 +119,7 @@ CommandLine parseCommandLine(const std::vector<std::string>& args) {
       positional.push_back(arg);
     }
   }
-  if (cl.help || cl.info || cl.listBrackets) return cl;
+  if (cl.help || cl.info || cl.listBrackets || cl.listOptions) return cl;
 
   if (positional.empty()) throw Error("no color input given (see taatool --help)");
   if (positional.size() > 1) {
@@ -208,6 +209,22 @@ std::string resolveOptionsHelp() {
   return text + "\n";
 }
 
+std::string optionsMarkdownTable() {
+  auto escaped = [](std::string text) {
+    for (std::size_t at = text.find('|'); at != std::string::npos; at = text.find('|', at + 2)) {
+      text.replace(at, 1, "\\|");
+    }
+    return text;
+  };
+  std::string table = "| option | values | default | what it does and trades |\n|---|---|---|---|\n";
+  for (const OptionInfo& o : resolveOptionList()) {
+    table += "| `--" + o.name + "` | " + escaped(o.values) + " | " +
+             (o.defaultValue.empty() ? "(empty)" : escaped(o.defaultValue)) + " | " +
+             escaped(o.help) + " |\n";
+  }
+  return table;
+}
+
 std::string helpText() {
   std::string text = R"help(taatool -- temporal anti-aliasing resolve for EXR AOV sequences (taa )help"
          TAA_VERSION_STRING R"help()
@@ -252,6 +269,7 @@ GL and diagnostics:
   --gl auto|egl|osmesa     OpenGL back end (default auto: EGL, falling back to OSMesa)
   --info                   print GL vendor/renderer/version, OCIO and OIIO versions
   --list-brackets          list the tonemap brackets the active OCIO config offers
+  --list-options           the resolve options as a Markdown table
   -v                       one line per frame
   -q                       errors only
   -h, --help               this text

@@ -14,6 +14,7 @@ struct CommandLine {
   bool help = false;
   bool info = false;
   bool listBrackets = false;
+  bool listOptions = false;
   Verbosity verbosity = Verbosity::Normal;
   std::string framesText;  // --frames as given; empty = every frame found on disk
   SequenceJob job;         // everything else, ready to run once frames are known
@@ -26,5 +27,9 @@ CommandLine parseCommandLine(const std::vector<std::string>& args);
 void resolveFrameList(CommandLine& commandLine);
 
 std::string helpText();
+
+// The resolve options as a Markdown table (option, values, default, what it trades): the README's
+// table is this output (`taatool --list-options`), and a test keeps the two equal.
+std::string optionsMarkdownTable();
 
 }  // namespace taa::cli

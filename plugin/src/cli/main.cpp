@@ -23,6 +23,10 @@ int run(const std::vector<std::string>& args) {
     if (!quiet) std::cerr << "taatool: " << message << "\n";
   };
   if (cl.info) return cli::printInfo(cl.job.backend, log, std::cout);
+  if (cl.listOptions) {
+    std::cout << cli::optionsMarkdownTable();
+    return 0;
+  }
   if (cl.listBrackets) {
     cli::printBrackets(cl.job.resolve.color.ocioConfig, std::cout);
     return 0;
