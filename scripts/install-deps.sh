@@ -7,6 +7,7 @@ packages=(
   libopenimageio-dev openimageio-tools libopenexr-dev libimath-dev
   libopencolorio-dev
   libglm-dev
+  nlohmann-json3-dev  # header-only JSON: the camera sidecar
   libgl-dev libegl-dev libegl-mesa0 libosmesa6-dev libgl1-mesa-dri  # headless GL on llvmpipe
   libgtest-dev
 )

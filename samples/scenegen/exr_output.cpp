@@ -65,6 +65,13 @@ void writeExr(const std::string& path, const ExrImage& image, int width, int hei
                  &frame.jitter.x);
   spec.attribute("taa:scene", sceneName);
   spec.attribute("taa:frame", frame.frame);
+  spec.attribute("taa:shot", frame.shot);
+  if (frame.hasCamera) {
+    // A column-vector GLM matrix laid out column by column is, float for float, the row-vector
+    // Imath M44f that OpenEXR stores row by row: no transpose on either side.
+    spec.attribute("worldToCamera", OIIO::TypeMatrix44, &frame.camera.worldToCamera[0][0]);
+    spec.attribute("worldToNDC", OIIO::TypeMatrix44, &frame.camera.worldToNDC[0][0]);
+  }
 
   auto output = OIIO::ImageOutput::create(path);
   if (!output) {
@@ -100,6 +107,11 @@ void writeFrame(const SceneFrame& frame, const std::string& sceneName, OutputLay
                   {"G", truth, 1, identity},
                   {"B", truth, 2, identity},
                   {"A", truth, 3, identity}});
+  // The yardstick's references, in internal conventions whatever the layout.
+  if (!frame.flow.empty()) {
+    write("flow", {{"X", &frame.flow, 0, identity}, {"Y", &frame.flow, 1, identity}});
+  }
+  if (!frame.disocclusion.empty()) write("disocclusion", {{"D", &frame.disocclusion, 0, identity}});
 
   if (layout == OutputLayout::Separate) {
     write("beauty", {{"R", color, 0, identity},

@@ -17,7 +17,10 @@ enum class OutputLayout {
 std::string framePath(const std::string& dir, const std::string& stem, int frame);
 
 // Creates `dir` if needed and writes the frame's files; throws taa::Error naming the file.
-// Headers also carry the jitter ("taa:jitter", v2f, px, y down) and the scene name.
+// Headers also carry the jitter ("taa:jitter", v2f, px, y down), the scene name ("taa:scene"),
+// the frame ("taa:frame") and shot ("taa:shot") numbers and, for scenes with a camera,
+// "worldToCamera" and "worldToNDC" (M44f, row vectors; samples/README.md). Scenes that provide
+// them also get flow.####.exr (X, Y: exact motion, sky included) and disocclusion.####.exr (D).
 void writeFrame(const SceneFrame& frame, const std::string& sceneName, OutputLayout layout,
                 const std::string& dir);
 

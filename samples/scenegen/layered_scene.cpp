@@ -137,6 +137,18 @@ SurfaceSample LayeredScene::sampleAt(const Placement& placement, int frame, glm:
   return result;
 }
 
+int LayeredScene::disocclusionAt(const Placement& now, const Placement& previous,
+                                 glm::dvec2 centre, glm::dvec2 motion, int width, int height) {
+  const glm::dvec2 before = centre + motion;
+  if (before.x < 0.0 || before.y < 0.0 || before.x >= width || before.y >= height) {
+    return kOutsideBefore;
+  }
+  const PlacedLayer* seen = visibleLayer(now, centre);
+  const PlacedLayer* seenBefore = visibleLayer(previous, before);
+  const bool same = seen && seenBefore ? seen->layer == seenBefore->layer : seen == seenBefore;
+  return same ? kVisibleBefore : kOccludedBefore;
+}
+
 SceneFrame LayeredScene::render(int frame, const RenderSettings& settings) const {
   const int n = settings.truthSamplesPerAxis;
   if (n < 1) throw Error("truth samples per axis must be at least 1", {"", frame, ""});
@@ -149,8 +161,11 @@ SceneFrame LayeredScene::render(int frame, const RenderSettings& settings) const
   out.motion = Image(w, h, 2);
   out.nextMotion = Image(w, h, 2);
   out.truth = Image(w, h, 4);
+  out.flow = Image(w, h, 2);
+  out.disocclusion = Image(w, h, 1);
   const glm::dvec2 jitter(out.jitter);
   const Placement placement = place(frame, false);
+  const Placement previous = place(frame - 1, false);
   const std::vector<glm::dvec2> pattern = truthPattern(n);
   const Image* cachedTruth = staticTruthHelps() ? &staticTruth(settings) : nullptr;
 
@@ -166,6 +181,11 @@ SceneFrame LayeredScene::render(int frame, const RenderSettings& settings) const
       out.motion.at(i, j)[1] = atCentre.motion.y;
       out.nextMotion.at(i, j)[0] = atCentre.nextMotion.x;
       out.nextMotion.at(i, j)[1] = atCentre.nextMotion.y;
+      // Layers are flat and rigid: the written motion is exact everywhere.
+      out.flow.at(i, j)[0] = atCentre.motion.x;
+      out.flow.at(i, j)[1] = atCentre.motion.y;
+      out.disocclusion.at(i, j)[0] =
+          float(disocclusionAt(placement, previous, centre, glm::dvec2(atCentre.motion), w, h));
 
       if (cachedTruth && !movingLayerTouches(placement, i, j)) {
         std::copy(cachedTruth->at(i, j), cachedTruth->at(i, j) + 4, out.truth.at(i, j));

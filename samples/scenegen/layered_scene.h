@@ -64,6 +64,9 @@ class LayeredScene : public Scene {
   static SurfaceSample sampleAt(const Placement& placement, int frame, glm::dvec2 position);
   static const PlacedLayer* visibleLayer(const Placement& placement, glm::dvec2 position);
   static glm::vec4 colorAt(const Placement& placement, glm::dvec2 position);
+  // A Disocclusion value for the surface seen at `centre` (its motion given).
+  static int disocclusionAt(const Placement& now, const Placement& previous, glm::dvec2 centre,
+                            glm::dvec2 motion, int width, int height);
   // Sub-pixel positions of the truth samples, n x n stratified, in [0, 1)^2.
   static std::vector<glm::dvec2> truthPattern(int n);
   // Box-filtered average over pixel (i, j): the mean of the pattern's samples.

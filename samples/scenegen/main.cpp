@@ -23,6 +23,7 @@ struct Arguments {
   int width = 320;
   int height = 180;
   OutputLayout layout = OutputLayout::Separate;
+  int truthSamples = 16;
   std::string outDir;
   bool list = false;
   bool help = false;
@@ -30,7 +31,7 @@ struct Arguments {
 
 const char* kUsage =
     "usage: taa-scenegen --scene NAME --out DIR [--frames 1-24] [--size 320x180]\n"
-    "                    [--layout separate|cycles]\n"
+    "                    [--layout separate|cycles] [--truth-samples 16]\n"
     "       taa-scenegen --list\n";
 
 [[noreturn]] void fail(const std::string& what) { throw std::invalid_argument(what); }
@@ -92,6 +93,9 @@ Arguments parseArguments(int argc, char** argv) {
       } else {
         fail("bad --layout '" + value + "' (want separate or cycles)");
       }
+    } else if (flag == "--truth-samples") {
+      args.truthSamples = parseInt(value, "--truth-samples");
+      if (args.truthSamples < 1) fail("--truth-samples must be at least 1");
     } else if (flag == "--out") {
       args.outDir = value;
     } else {
@@ -114,7 +118,8 @@ void listScenes() {
 void generate(const Arguments& args) {
   const auto start = std::chrono::steady_clock::now();
   const auto scene = taa::scenes::makeScene(args.scene, args.width, args.height);
-  const taa::scenes::RenderSettings settings;
+  taa::scenes::RenderSettings settings;
+  settings.truthSamplesPerAxis = args.truthSamples;
   for (int frame = args.firstFrame; frame <= args.lastFrame; ++frame) {
     taa::scenes::writeFrame(scene->render(frame, settings), scene->name(), args.layout,
                             args.outDir);

@@ -3,9 +3,11 @@
 // box-filtered truth, all in taa's internal conventions (DESIGN.md section 3).
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <utility>
 
+#include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
 
 #include "resolve/jitter.h"
@@ -17,6 +19,22 @@ struct RenderSettings {
   JitterOptions jitter;          // the jitter of each frame is frameJitter(frame, jitter)
   int truthSamplesPerAxis = 16;  // truth = mean of N x N stratified samples per pixel, N >= 1
   int threads = 0;               // worker threads; 0 = one per hardware thread
+  std::uint32_t truthSeed = 0;   // picks the truth's jittered sample pattern (3D scenes); any
+                                 // value gives a converged truth, different ones other samples
+};
+
+// Camera matrices of a frame as a renderer writes them (samples/README.md): column-vector GLM
+// matrices here, written to EXR headers as row-vector M44f worldToCamera / worldToNDC.
+struct CameraMatrices {
+  glm::mat4 worldToCamera{1.0f};
+  glm::mat4 worldToNDC{1.0f};
+};
+
+// Values of SceneFrame::disocclusion.
+enum Disocclusion : int {
+  kVisibleBefore = 0,    // the surface was visible at pos + flow in the previous frame
+  kOccludedBefore = 1,   // it was on screen there but hidden behind something else
+  kOutsideBefore = 2,    // pos + flow lies outside the previous frame (or behind its camera)
 };
 
 // One rendered frame. Images are width x height, rows top first.
@@ -28,6 +46,14 @@ struct SceneFrame {
   Image motion;            // 2 channels at the pixel centre: previous - current, px, y down
   Image nextMotion;        // 2 channels at the pixel centre: next - current, px, y down
   Image truth;             // RGBA: box-filtered pixel average, unjittered
+  // For the yardstick's metrics (empty when a scene does not provide them):
+  Image flow;              // 2 channels: the exact motion of what the pixel centre sees,
+                           // previous - current, px, y down, including the sky at infinity
+                           // (where `motion` is zero, as Cycles writes it)
+  Image disocclusion;      // 1 channel at the pixel centre: a Disocclusion value
+  bool hasCamera = false;  // whether `camera` holds the frame's matrices
+  CameraMatrices camera;
+  int shot = 0;            // shot number: changes at a hard cut
 };
 
 // A scene of fixed raster size. Rendering a frame is independent of any other frame, so frames

@@ -4,6 +4,7 @@
 
 #include "scenegen/layered_scene.h"
 #include "scenegen/patterns.h"
+#include "scenegen/scenes_3d.h"
 #include "taa/error.h"
 
 namespace taa::scenes {
@@ -39,11 +40,15 @@ std::unique_ptr<Scene> makeMovingObject(int width, int height) {
 }  // namespace
 
 const std::vector<SceneInfo>& sceneList() {
-  static const std::vector<SceneInfo> list = {
-      {"static", "static high-frequency HDR pattern, no motion, constant depth"},
-      {"translate", "the pattern translating rigidly at (1.37, 0.61) px/frame"},
-      {"moving_object", "static pattern (depth 10) with a textured disc (depth 4) crossing it"},
-  };
+  static const std::vector<SceneInfo> list = [] {
+    std::vector<SceneInfo> all = {
+        {"static", "static high-frequency HDR pattern, no motion, constant depth"},
+        {"translate", "the pattern translating rigidly at (1.37, 0.61) px/frame"},
+        {"moving_object", "static pattern (depth 10) with a textured disc (depth 4) crossing it"},
+    };
+    for (const SceneInfo& info : scene3dList()) all.push_back(info);
+    return all;
+  }();
   return list;
 }
 
@@ -68,6 +73,7 @@ std::unique_ptr<Scene> makeScene(const std::string& name, int width, int height)
                                           std::vector<Layer>{backgroundLayer(translateVelocity())});
   }
   if (name == "moving_object") return makeMovingObject(width, height);
+  if (auto scene = makeScene3d(name, width, height)) return scene;
   std::string known;
   for (const SceneInfo& info : sceneList()) known += (known.empty() ? "" : ", ") + info.name;
   throw Error("unknown scene '" + name + "' (known: " + known + ")");

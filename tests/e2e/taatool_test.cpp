@@ -121,7 +121,7 @@ TEST_F(TaatoolTest, ResolvesSeparateFilesIntoRgbaExrKeepingWindows) {
   readPixels(in / "beauty.0003.exr", &inSpec);
   EXPECT_EQ(spec.nchannels, 4);
   EXPECT_EQ(spec.channelnames, (std::vector<std::string>{"R", "G", "B", "A"}));
-  EXPECT_EQ(spec.format, OIIO::TypeDesc::HALF);
+  EXPECT_EQ(spec.format, inSpec.format);  // the input's pixel type unless -d says otherwise
   EXPECT_EQ(spec.width, inSpec.width);
   EXPECT_EQ(spec.full_width, inSpec.full_width);
   EXPECT_EQ(spec.x, inSpec.x);

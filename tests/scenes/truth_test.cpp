@@ -16,6 +16,9 @@ namespace {
 TEST(SceneTruth, MeanMatchesMeanOfColorSamples) {
   for (const SceneInfo& info : sceneList()) {
     const auto scene = makeScene(info.name, 320, 180);
+    // Layered scenes only: 3D scenes have their own truth tests (tests/quality), and HDR
+    // highlights worth 1000 make a 4-sample mean too noisy for a 2% bound.
+    if (!dynamic_cast<const LayeredScene*>(scene.get())) continue;
     glm::dvec4 colorMean(0.0), truthMean(0.0);
     const int frames = 4;
     for (int frame = 1; frame <= frames; ++frame) {

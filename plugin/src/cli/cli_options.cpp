@@ -1,30 +1,25 @@
 #include "cli/cli_options.h"
 
 #include <cmath>
+#include <limits>
 #include <functional>
 #include <map>
 #include <sstream>
 
+#include "io/renderer_presets.h"
 #include "io/sequence_pattern.h"
 #include "io/sequence_scan.h"
 #include "resolve/option_registry.h"
 #include "taa/error.h"
+#include "util/number_text.h"
 
 namespace taa::cli {
 namespace {
 
 float parseFloat(const std::string& option, const std::string& text) {
-  std::size_t used = 0;
-  float value = 0.0f;
-  try {
-    value = std::stof(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used != text.size() || !std::isfinite(value)) {
-    throw Error(option + " expects a number, got \"" + text + "\"");
-  }
-  return value;
+  const std::optional<float> value = parseFloatText(text);
+  if (!value) throw Error(option + " expects a number, got \"" + text + "\"");
+  return *value;
 }
 
 std::string choice(const std::string& option, const std::string& text,
@@ -37,21 +32,64 @@ std::string choice(const std::string& option, const std::string& text,
   throw Error(option + " expects one of " + list + ", got \"" + text + "\"");
 }
 
-// Channel and file choices for depth/motion, applied after all options are read so that
+// "inf" or a number (for --depth-far with reversed-Z).
+double parseDistance(const std::string& option, const std::string& text) {
+  if (text == "inf") return std::numeric_limits<double>::infinity();
+  const float value = parseFloat(option, text);
+  if (value <= 0.0f) throw Error(option + " expects a positive distance, got \"" + text + "\"");
+  return value;
+}
+
+template <typename Enum>
+Enum named(const std::string& option, const std::string& text,
+           const std::vector<std::pair<std::string, Enum>>& names) {
+  std::vector<std::string> choices;
+  for (const auto& [name, value] : names) {
+    if (text == name) return value;
+    choices.push_back(name);
+  }
+  choice(option, text, choices);  // throws, listing the choices
+  return names.front().second;
+}
+
+// Channel, file and part choices for an AOV, applied after all options are read so that
 // their order on the command line does not matter.
 struct AovArgs {
-  std::optional<std::string> pattern, channels;
+  std::optional<std::string> pattern, channels, part;
 };
+
+// Sets the job's jitter source from --jitter: header:ATTR and sidecar are job-level sources;
+// anything else is the resolve option (halton, none).
+void setJitter(SequenceJob& job, const std::string& value) {
+  const std::string header = "header:";
+  if (value.rfind(header, 0) == 0 && value.size() > header.size()) {
+    job.jitterSource = JobJitterSource::HeaderAttribute;
+    job.jitterAttribute = value.substr(header.size());
+  } else if (value == "sidecar") {
+    job.jitterSource = JobJitterSource::Sidecar;
+  } else {
+    try {
+      setResolveOption(job.resolve, "jitter", value);
+    } catch (const Error& e) {
+      throw Error(e.description() + " (or header:ATTRIBUTE, sidecar)");
+    }
+    job.jitterSource = JobJitterSource::Options;
+  }
+}
 
 }  // namespace
 
 CommandLine parseCommandLine(const std::vector<std::string>& args) {
   CommandLine cl;
   io::AovLayout& layout = cl.job.layout;
-  std::string colorChannels = "R,G,B,A";
+  std::optional<std::string> colorChannels, colorPart;
   AovArgs depth, motion;
   std::string preset, layer = "ViewLayer";
   std::vector<std::string> positional;
+  // Convention flags edit the layout after the preset, so they always win over it.
+  using LayoutEdit = std::function<void(io::AovLayout&)>;
+  std::vector<LayoutEdit> edits;
+  auto edit = [&](LayoutEdit e) { edits.push_back(std::move(e)); };
 
   using Handler = std::function<void(const std::string&)>;
   const std::map<std::string, Handler> withValue = {
@@ -62,22 +100,96 @@ CommandLine parseCommandLine(const std::vector<std::string>& args) {
       {"--color-ch", [&](const std::string& v) { colorChannels = v; }},
       {"--depth-ch", [&](const std::string& v) { depth.channels = v; }},
       {"--motion-ch", [&](const std::string& v) { motion.channels = v; }},
-      {"--preset", [&](const std::string& v) { preset = choice("--preset", v, {"cycles"}); }},
+      {"--color-part", [&](const std::string& v) { colorPart = v; }},
+      {"--depth-part", [&](const std::string& v) { depth.part = v; }},
+      {"--motion-part", [&](const std::string& v) { motion.part = v; }},
+      {"--preset",
+       [&](const std::string& v) {
+         io::presetLayout(v, "check");  // throws for an unknown name, listing the known ones
+         preset = v;
+       }},
       {"--layer", [&](const std::string& v) { layer = v; }},
       {"--motion-y",
        [&](const std::string& v) {
-         layout.motionConvention.yUp = choice("--motion-y", v, {"up", "down"}) == "up";
+         const bool up = choice("--motion-y", v, {"up", "down"}) == "up";
+         edit([up](io::AovLayout& l) { l.motionConvention.yUp = up; });
        }},
       {"--motion-to",
        [&](const std::string& v) {
-         layout.motionConvention.toPrevious =
-             choice("--motion-to", v, {"previous", "next"}) == "previous";
+         const bool previous = choice("--motion-to", v, {"previous", "next"}) == "previous";
+         edit([previous](io::AovLayout& l) { l.motionConvention.toPrevious = previous; });
        }},
       {"--motion-scale",
-       [&](const std::string& v) { layout.motionConvention.scale = parseFloat("--motion-scale", v); }},
+       [&](const std::string& v) {
+         const float scale = parseFloat("--motion-scale", v);
+         edit([scale](io::AovLayout& l) { l.motionConvention.scale = scale; });
+       }},
+      {"--motion-units",
+       [&](const std::string& v) {
+         const auto units = named<io::MotionUnits>("--motion-units", v,
+                                                   {{"pixels", io::MotionUnits::Pixels},
+                                                    {"ndc", io::MotionUnits::Ndc},
+                                                    {"uv", io::MotionUnits::Uv}});
+         edit([units](io::AovLayout& l) { l.motionConvention.units = units; });
+       }},
+      {"--motion-encoding",
+       [&](const std::string& v) {
+         const auto encoding = named<io::MotionEncoding>(
+             "--motion-encoding", v,
+             {{"signed", io::MotionEncoding::Signed}, {"centred", io::MotionEncoding::Centred}});
+         edit([encoding](io::AovLayout& l) { l.motionConvention.encoding = encoding; });
+       }},
+      {"--motion-max",
+       [&](const std::string& v) {
+         const float max = parseFloat("--motion-max", v);
+         edit([max](io::AovLayout& l) { l.motionConvention.centredMax = max; });
+       }},
+      {"--depth-kind",
+       [&](const std::string& v) {
+         const auto kind = named<io::DepthKind>("--depth-kind", v,
+                                                {{"planar", io::DepthKind::Planar},
+                                                 {"radial", io::DepthKind::Radial},
+                                                 {"ndc", io::DepthKind::Ndc},
+                                                 {"reversed-z", io::DepthKind::ReversedZ},
+                                                 {"inverse", io::DepthKind::Inverse}});
+         edit([kind](io::AovLayout& l) { l.depthConvention.kind = kind; });
+       }},
+      {"--depth-near",
+       [&](const std::string& v) {
+         const double nearPlane = parseDistance("--depth-near", v);
+         edit([nearPlane](io::AovLayout& l) { l.depthConvention.nearPlane = nearPlane; });
+       }},
+      {"--depth-far",
+       [&](const std::string& v) {
+         const double farPlane = parseDistance("--depth-far", v);
+         edit([farPlane](io::AovLayout& l) { l.depthConvention.farPlane = farPlane; });
+       }},
+      {"--depth-fov",
+       [&](const std::string& v) {
+         const float fov = parseFloat("--depth-fov", v);
+         if (fov <= 0.0f || fov >= 180.0f) {
+           throw Error("--depth-fov expects degrees in (0, 180), got \"" + v + "\"");
+         }
+         edit([fov](io::AovLayout& l) { l.depthConvention.horizontalFovDegrees = fov; });
+       }},
       {"--depth-nohit",
        [&](const std::string& v) {
-         layout.depthConvention.noHitAbove = parseFloat("--depth-nohit", v);
+         const float noHit = parseFloat("--depth-nohit", v);
+         edit([noHit](io::AovLayout& l) { l.depthConvention.noHitAbove = noHit; });
+       }},
+      {"--ndc",
+       [&](const std::string& v) {
+         cl.job.ndc = named<NdcConvention>(
+             "--ndc", v,
+             {{"zero-one-y-down", NdcConvention::ZeroOneYDown},
+              {"minus-one-one-y-up", NdcConvention::MinusOneOneYUp}});
+       }},
+      {"--camera-sidecar", [&](const std::string& v) { cl.job.cameraSidecar = v; }},
+      {"--jitter", [&](const std::string& v) { setJitter(cl.job, v); }},
+      {"--out-ch", [&](const std::string& v) { cl.job.outputChannels = io::parseChannelList(v); }},
+      {"--passthrough",
+       [&](const std::string& v) {
+         for (const std::string& p : io::parseChannelList(v)) layout.passthrough.push_back(p);
        }},
       {"--reset-frames",
        [&](const std::string& v) {
@@ -127,34 +239,38 @@ CommandLine parseCommandLine(const std::vector<std::string>& args) {
                 positional[1] + "\"");
   }
 
-  if (preset == "cycles") {
-    const io::AovLayout cycles = io::cyclesLayout(positional[0], layer);
-    layout.color = cycles.color;
-    layout.depth = cycles.depth;
-    layout.motion = cycles.motion;
-    layout.motionConvention = cycles.motionConvention;
-    layout.depthConvention = cycles.depthConvention;
+  const std::vector<std::string> passthrough = layout.passthrough;
+  if (!preset.empty()) {
+    layout = io::presetLayout(preset, positional[0], layer);
+    layout.passthrough = passthrough;
   } else {
-    layout.color = {positional[0], io::parseChannelList(colorChannels)};
+    layout.color = {positional[0], {"R", "G", "B", "A"}, ""};
   }
+  if (colorChannels) layout.color.channels = io::parseChannelList(*colorChannels);
+  if (colorPart) layout.color.part = *colorPart;
   // Explicit flags override the preset field by field.
   auto applyAov = [](std::optional<io::AovSource>& aov, const AovArgs& given,
                      const char* defaultChannels) {
-    if (!given.pattern && !given.channels) return;
-    if (!aov) aov = io::AovSource{"", io::parseChannelList(defaultChannels)};
+    if (!given.pattern && !given.channels && !given.part) return;
+    if (!aov) aov = io::AovSource{"", io::parseChannelList(defaultChannels), ""};
     if (given.pattern) aov->pattern = *given.pattern;
     if (given.channels) aov->channels = io::parseChannelList(*given.channels);
+    if (given.part) aov->part = *given.part;
   };
   applyAov(layout.depth, depth, "Z");
   applyAov(layout.motion, motion, "X,Y");
+  for (const LayoutEdit& e : edits) e(layout);
   if (layout.color.channels.size() < 3 || layout.color.channels.size() > 4) {
-    throw Error("--color-ch expects 3 or 4 channel names, got " + colorChannels);
+    throw Error("--color-ch expects 3 or 4 channel names, got " + colorChannels.value_or(""));
   }
   if (layout.depth && layout.depth->channels.size() != 1) {
     throw Error("--depth-ch expects 1 channel name");
   }
   if (layout.motion && layout.motion->channels.size() != 2) {
     throw Error("--motion-ch expects 2 channel names (x, y)");
+  }
+  if (!cl.job.outputChannels.empty() && cl.job.outputChannels.size() != 4) {
+    throw Error("--out-ch expects 4 channel names (R, G, B, A)");
   }
   return cl;
 }
@@ -245,15 +361,40 @@ AOVs and channels:
   --depth-ch NAME          depth channel (default Z)
   --motion PATTERN         motion-vector files (default: none; the color file if --motion-ch)
   --motion-ch X,Y          motion channel names (default X,Y)
-  --preset cycles          Blender Cycles multi-layer EXR: <layer>.Combined.RGBA,
-                           <layer>.Depth.Z, <layer>.Vector.XY, all in the color file
-  --layer NAME             render layer name for --preset (default ViewLayer)
+  --color-part NAME        multi-part EXR: the part holding color (default: the first part
+  --depth-part NAME        that has the channels); --depth-part, --motion-part likewise
+  --motion-part NAME
+  --preset NAME            a renderer's channel names and conventions, NAME one of
+                           @PRESETS@.
+                           Every channel or convention flag overrides the preset field by
+                           field; README "Renderer presets" says what is verified.
+                           Example: --preset cycles --layer RL
+  --layer NAME             render layer name for --preset cycles (default ViewLayer)
 
-Conventions (internal: motion in pixels, y down, pointing to the previous frame):
+Conventions (internal: motion in pixels, y down, pointing to the previous frame; depth planar):
+  --motion-units pixels|ndc|uv  units of the motion AOV: pixels; ndc ([-1, 1] across the display
+                           window); uv ([0, 1] across it) (default pixels)
+  --motion-encoding signed|centred  centred: 0.5 = no motion, value = 0.5 + motion / (2 max)
+  --motion-max M           centred: the motion (in --motion-units) a value of 1 stands for (1)
   --motion-y up|down       y axis direction of the motion AOV (default down; cycles: up)
-  --motion-to previous|next  where the vectors point (default previous)
+  --motion-to previous|next  where the vectors point (default previous; next: forward in time)
   --motion-scale S         multiply vectors by S (default 1)
-  --depth-nohit V          depth at or above V means nothing was hit (default 1e9)
+  --depth-kind KIND        planar | radial (distance along the ray) | ndc (0 near, 1 far) |
+                           reversed-z (1 near, 0 far) | inverse (1/z) (default planar)
+  --depth-near N           near plane for ndc and reversed-z depth (default 0.1)
+  --depth-far F            far plane for ndc and reversed-z depth; reversed-z takes inf (1e4)
+  --depth-fov DEGREES      radial depth without camera matrices: horizontal field of view of a
+                           centred pinhole camera over the display window
+  --depth-nohit V          planar depth at or above V means nothing was hit (default 1e9)
+
+Camera and jitter:
+  --ndc zero-one-y-down|minus-one-one-y-up  NDC of the headers' worldToNDC (default
+                           zero-one-y-down: RenderMan's NDC, (0, 0) top left)
+  --camera-sidecar FILE    JSON per frame: view and projection (OpenGL, column-major) and
+                           jitter (px, y down); replaces header matrices (docs/ARCHITECTURE.md)
+  --jitter header:ATTR     each frame's jitter from the color header's float[2] attribute ATTR
+                           in pixels, y down (e.g. header:taa:jitter)
+  --jitter sidecar         each frame's jitter from --camera-sidecar
 
 @RESOLVE_OPTIONS@
 Sequences and cuts:
@@ -261,8 +402,12 @@ Sequences and cuts:
   --debug-layers           add layers debug.historyWeight, debug.rejection (0 kept, 1 none,
                            2 off-screen, 3 disoccluded), debug.velocity.x/y, debug.nonFinite
 
-Output:
-  -d half|float            output pixel type (default half)
+Output (channel names, windows and metadata of the color input are kept, plus taa:version and
+taa:options, the resolve options used):
+  -d half|float|input      output pixel type (default input: the color input's)
+  --out-ch R,G,B,A         output color channel names (default: the color input's names)
+  --passthrough PATTERNS   copy channels of the color file (part) whose names match these
+                           comma-separated globs untouched into the output: 'ViewLayer.*,*.Z'
   --compression NAME       none, rle, zips, zip, piz, pxr24, b44, b44a, dwaa, dwab (default zip)
 
 GL and diagnostics:
@@ -277,6 +422,7 @@ GL and diagnostics:
 Errors are printed as "taatool ERROR: <what> : <file> (frame N, channel C)"; exit status 1.
 )help";
   text.replace(text.find("@RESOLVE_OPTIONS@"), 17, resolveOptionsHelp());
+  text.replace(text.find("@PRESETS@"), 9, io::presetNames());
   return text;
 }
 

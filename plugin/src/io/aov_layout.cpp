@@ -2,25 +2,13 @@
 
 #include <cctype>
 
+#include "io/renderer_presets.h"
 #include "taa/error.h"
 
 namespace taa::io {
 
 AovLayout cyclesLayout(const std::string& colorPattern, const std::string& layer) {
-  // Cycles names passes "<layer>.<pass>.<channel>"; an empty layer name drops the prefix.
-  const std::string prefix = layer.empty() ? std::string() : layer + ".";
-  AovLayout layout;
-  layout.color = {colorPattern,
-                  {prefix + "Combined.R", prefix + "Combined.G", prefix + "Combined.B",
-                   prefix + "Combined.A"}};
-  layout.depth = AovSource{"", {prefix + "Depth.Z"}};
-  layout.motion = AovSource{"", {prefix + "Vector.X", prefix + "Vector.Y"}};
-  // Vector.XY = previous - current in pixels with y up (verified on a Blender render).
-  layout.motionConvention.yUp = true;
-  layout.motionConvention.toPrevious = true;
-  layout.motionConvention.scale = 1.0f;
-  layout.depthConvention.noHitAbove = 1e9f;  // Cycles writes 1e10 where a ray hits nothing
-  return layout;
+  return presetLayout("cycles", colorPattern, layer);
 }
 
 std::vector<std::string> parseChannelList(const std::string& text) {

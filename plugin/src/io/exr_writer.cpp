@@ -94,15 +94,40 @@ fs::path temporaryPathFor(const fs::path& finalPath) {
   return finalPath.parent_path() / name;
 }
 
+std::vector<std::string> colorNames(const WriteOptions& options) {
+  if (options.rgbaNames.empty()) return {"R", "G", "B", "A"};
+  return options.rgbaNames;
+}
+
+OIIO::TypeDesc colorFormat(const WriteOptions& options, const OIIO::ImageSpec& templateSpec,
+                           bool hasTemplate) {
+  switch (options.pixelType) {
+    case PixelType::Half: return OIIO::TypeHalf;
+    case PixelType::Float: return OIIO::TypeFloat;
+    case PixelType::AsInput: break;
+  }
+  if (!hasTemplate) return OIIO::TypeFloat;
+  const std::string first = colorNames(options).front();
+  OIIO::TypeDesc format = templateSpec.format;
+  for (int c = 0; c < templateSpec.nchannels; ++c) {
+    if (templateSpec.channel_name(c) == first) format = templateSpec.channelformat(c);
+  }
+  return format == OIIO::TypeHalf ? OIIO::TypeHalf : OIIO::TypeFloat;
+}
+
 OIIO::ImageSpec makeOutputSpec(const Image& rgba, const OIIO::ImageSpec& templateSpec,
                                const WriteOptions& options, const ExtraChannels& extra) {
-  const OIIO::TypeDesc format =
-      options.pixelType == PixelType::Half ? OIIO::TypeHalf : OIIO::TypeFloat;
+  const bool hasTemplate = templateSpec.width > 0 && templateSpec.height > 0;
+  const OIIO::TypeDesc format = colorFormat(options, templateSpec, hasTemplate);
   OIIO::ImageSpec spec(rgba.width, rgba.height, 4 + int(extra.names.size()), format);
-  spec.channelnames = {"R", "G", "B", "A"};
+  spec.channelnames = colorNames(options);
   spec.channelnames.insert(spec.channelnames.end(), extra.names.begin(), extra.names.end());
   spec.alpha_channel = 3;
-  const bool hasTemplate = templateSpec.width > 0 && templateSpec.height > 0;
+  if (!extra.formats.empty()) {
+    spec.channelformats.assign(4, format);
+    spec.channelformats.insert(spec.channelformats.end(), extra.formats.begin(),
+                               extra.formats.end());
+  }
   if (hasTemplate) {
     spec.x = templateSpec.x;
     spec.y = templateSpec.y;
@@ -118,12 +143,48 @@ OIIO::ImageSpec makeOutputSpec(const Image& rgba, const OIIO::ImageSpec& templat
   return spec;
 }
 
+std::string firstDuplicate(const std::vector<std::string>& names) {
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    for (std::size_t j = i + 1; j < names.size(); ++j) {
+      if (names[i] == names[j]) return names[i];
+    }
+  }
+  return "";
+}
+
 }  // namespace
 
 PixelType parsePixelType(const std::string& text) {
   if (text == "half") return PixelType::Half;
   if (text == "float") return PixelType::Float;
-  throw Error("unknown pixel type \"" + text + "\" (expected half or float)");
+  if (text == "input") return PixelType::AsInput;
+  throw Error("unknown pixel type \"" + text + "\" (expected half, float or input)");
+}
+
+void appendExtraChannels(ExtraChannels& extra, const ExtraChannels& more) {
+  if (more.names.empty()) return;
+  if (extra.names.empty()) {
+    extra = more;
+    return;
+  }
+  const int channels = extra.image.channels + more.image.channels;
+  Image joined(extra.image.width, extra.image.height, channels);
+  for (std::size_t i = 0, n = std::size_t(joined.width) * joined.height; i < n; ++i) {
+    std::copy_n(&extra.image.pixels[i * extra.image.channels], extra.image.channels,
+                &joined.pixels[i * channels]);
+    std::copy_n(&more.image.pixels[i * more.image.channels], more.image.channels,
+                &joined.pixels[i * channels + extra.image.channels]);
+  }
+  const bool typed = !extra.formats.empty() || !more.formats.empty();
+  if (typed) {
+    // An untyped side follows the color's type: written as float, the widest choice.
+    if (extra.formats.empty()) extra.formats.assign(extra.names.size(), OIIO::TypeFloat);
+    std::vector<OIIO::TypeDesc> moreFormats = more.formats;
+    if (moreFormats.empty()) moreFormats.assign(more.names.size(), OIIO::TypeFloat);
+    extra.formats.insert(extra.formats.end(), moreFormats.begin(), moreFormats.end());
+  }
+  extra.names.insert(extra.names.end(), more.names.begin(), more.names.end());
+  extra.image = std::move(joined);
 }
 
 void validateCompression(const std::string& compression) {
@@ -159,6 +220,19 @@ void writeExrAtomic(const std::string& path, const Image& rgba, const OIIO::Imag
       (int(extra.names.size()) != extra.image.channels || extra.image.width != rgba.width ||
        extra.image.height != rgba.height)) {
     throw Error("extra channels must match their names and the image size", context);
+  }
+  if (!extra.formats.empty() && extra.formats.size() != extra.names.size()) {
+    throw Error("extra channel formats must match their names", context);
+  }
+  if (colorNames(options).size() != 4) {
+    throw Error("the output needs 4 color channel names, " +
+                    std::to_string(options.rgbaNames.size()) + " given",
+                context);
+  }
+  std::vector<std::string> allNames = colorNames(options);
+  allNames.insert(allNames.end(), extra.names.begin(), extra.names.end());
+  if (const std::string twice = firstDuplicate(allNames); !twice.empty()) {
+    throw Error("output channel " + twice + " is named twice", {path, std::nullopt, twice});
   }
   const bool hasTemplate = templateSpec.width > 0 && templateSpec.height > 0;
   if (hasTemplate && (rgba.width != templateSpec.width || rgba.height != templateSpec.height)) {

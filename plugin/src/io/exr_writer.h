@@ -5,26 +5,39 @@
 #include <OpenImageIO/imageio.h>
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "util/image.h"
 
 namespace taa::io {
 
-enum class PixelType { Half, Float };
+// AsInput: the template's type for its first color channel (rgbaNames[0]); half stays half,
+// anything else is written as float. Without a template: float.
+enum class PixelType { Half, Float, AsInput };
 
 struct WriteOptions {
-  PixelType pixelType = PixelType::Half;
+  WriteOptions(PixelType type = PixelType::AsInput, std::string compressionName = "zip",
+               std::vector<std::string> names = {})
+      : pixelType(type), compression(std::move(compressionName)), rgbaNames(std::move(names)) {}
+
+  PixelType pixelType = PixelType::AsInput;
   std::string compression = "zip";  // any OpenEXR compression OIIO knows: none, zip, piz, dwaa...
+  std::vector<std::string> rgbaNames;  // the 4 color channels' names; empty: R, G, B, A
 };
 
 // Channels written after R, G, B, A (diagnostics, pass-through): one name per image channel.
 struct ExtraChannels {
   std::vector<std::string> names;
   Image image;  // same size as the RGBA image; empty: none
+  std::vector<OIIO::TypeDesc> formats;  // per name (pass-through keeps its type); empty: the
+                                        // color's pixel type
 };
 
-// "half" | "float"; otherwise throws taa::Error.
+// Appends `more`'s channels after `extra`'s (same image size, or `extra` empty).
+void appendExtraChannels(ExtraChannels& extra, const ExtraChannels& more);
+
+// "half" | "float" | "input"; otherwise throws taa::Error.
 PixelType parsePixelType(const std::string& text);
 
 // Accepts the OpenEXR compressions none, rle, zips, zip, piz, pxr24, b44, b44a, dwaa, dwab, and
@@ -32,8 +45,8 @@ PixelType parsePixelType(const std::string& text);
 // option before any frame is resolved.
 void validateCompression(const std::string& compression);
 
-// Writes `rgba` (4 channels, covering the template's data window) to `path` as R, G, B, A, then
-// the extra channels if any.
+// Writes `rgba` (4 channels, covering the template's data window) to `path` as R, G, B, A (or
+// options.rgbaNames), then the extra channels if any. Channel names must be unique.
 // The template's display/data windows and metadata are kept; channel names, formats and
 // compression come from this call. A template without pixels (width or height 0, e.g. a
 // default ImageSpec) means a data and display window of rgba's size at the origin, no metadata.

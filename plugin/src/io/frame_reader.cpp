@@ -1,5 +1,6 @@
 #include "io/frame_reader.h"
 
+#include <fnmatch.h>
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
@@ -10,13 +11,12 @@
 #include <memory>
 #include <system_error>
 
+#include "io/aov_conversion.h"
 #include "io/sequence_pattern.h"
 #include "taa/error.h"
 
 namespace taa::io {
 namespace {
-
-constexpr float kInfinity = std::numeric_limits<float>::infinity();
 
 std::string joinNames(const std::vector<std::string>& names) {
   std::string joined;
@@ -29,11 +29,18 @@ std::string describeWindow(const OIIO::ImageSpec& spec) {
          std::to_string(spec.x) + ", " + std::to_string(spec.y) + ")";
 }
 
-// An open EXR file, shared by every AOV that lives in it.
+// An open EXR file, shared by every AOV that lives in it, with the header of each part.
 struct OpenExr {
   std::string path;
   std::unique_ptr<OIIO::ImageInput> input;
+  std::vector<OIIO::ImageSpec> parts;  // subimages, in file order
 };
+
+std::string partName(const OIIO::ImageSpec& spec) {
+  std::string name = spec.get_string_attribute("name");
+  if (name.empty()) name = spec.get_string_attribute("oiio:subimagename");
+  return name;
+}
 
 // Opens `path` and insists that OIIO read it as OpenEXR: a PNG named .exr must not slip through.
 OpenExr openExr(const std::string& path, const std::string& aovName, int frame) {
@@ -52,18 +59,49 @@ OpenExr openExr(const std::string& path, const std::string& aovName, int frame) 
     throw Error("the " + aovName + " file is not an OpenEXR file (it reads as " + format + ")",
                 context);
   }
-  const OIIO::ImageSpec& spec = input->spec();
-  if (spec.deep) throw Error("deep EXR files are not supported", context);
-  if (spec.depth != 1) throw Error("volume (3D) EXR files are not supported", context);
-  return {path, std::move(input)};
+  std::vector<OIIO::ImageSpec> parts;
+  for (int subimage = 0; input->seek_subimage(subimage, 0); ++subimage) {
+    parts.push_back(input->spec());
+    if (parts.back().deep) throw Error("deep EXR files are not supported", context);
+    if (parts.back().depth != 1) throw Error("volume (3D) EXR files are not supported", context);
+  }
+  if (parts.empty()) throw Error("the " + aovName + " file has no image part", context);
+  return {path, std::move(input), std::move(parts)};
+}
+
+bool hasChannels(const OIIO::ImageSpec& spec, const std::vector<std::string>& names) {
+  return std::all_of(names.begin(), names.end(), [&](const std::string& name) {
+    return std::find(spec.channelnames.begin(), spec.channelnames.end(), name) !=
+           spec.channelnames.end();
+  });
+}
+
+// The part an AOV reads: the one named `source.part`, else the first holding every channel
+// (part 0 when none does, so that the missing-channel error names what part 0 has).
+int findPart(const OpenExr& file, const AovSource& source, const std::string& aovName,
+             int frame) {
+  if (!source.part.empty()) {
+    std::string names;
+    for (std::size_t i = 0; i < file.parts.size(); ++i) {
+      if (partName(file.parts[i]) == source.part) return int(i);
+      names += (names.empty() ? "" : ", ") + partName(file.parts[i]);
+    }
+    throw Error("the " + aovName + " file has no part named " + source.part +
+                    "; parts available: " + (names.empty() ? "(unnamed)" : names),
+                {file.path, frame, joinNames(source.channels)});
+  }
+  for (std::size_t i = 0; i < file.parts.size(); ++i) {
+    if (hasChannels(file.parts[i], source.channels)) return int(i);
+  }
+  return 0;
 }
 
 // Reads `names` from subimage 0, in the order asked. EXR sorts channels by name, so the file
 // order differs from the asked order: one read covers the smallest contiguous range holding
 // every asked channel, then the asked ones are picked out.
-Image readChannels(OpenExr& file, const std::vector<std::string>& names,
+Image readChannels(OpenExr& file, int part, const std::vector<std::string>& names,
                    const std::string& aovName, int frame) {
-  const OIIO::ImageSpec& spec = file.input->spec();
+  const OIIO::ImageSpec& spec = file.parts[std::size_t(part)];
   std::vector<int> indices;
   std::vector<std::string> missing;
   for (const std::string& name : names) {
@@ -75,9 +113,13 @@ Image readChannels(OpenExr& file, const std::vector<std::string>& names,
     }
   }
   if (!missing.empty()) {
+    std::string available = joinNames(spec.channelnames);
+    for (std::size_t i = 0; i < file.parts.size() && file.parts.size() > 1; ++i) {
+      available += (i == 0 ? " (part " : "; part ") + partName(file.parts[i]) + ": " +
+                   joinNames(file.parts[i].channelnames) + (i + 1 == file.parts.size() ? ")" : "");
+    }
     throw Error("the " + aovName + " file lacks channel" + (missing.size() > 1 ? "s " : " ") +
-                    joinNames(missing) + "; channels available: " +
-                    joinNames(spec.channelnames),
+                    joinNames(missing) + "; channels available: " + available,
                 {file.path, frame, joinNames(missing)});
   }
 
@@ -87,7 +129,7 @@ Image readChannels(OpenExr& file, const std::vector<std::string>& names,
   const std::size_t pixelCount = std::size_t(spec.width) * spec.height;
   std::vector<float> buffer(pixelCount * stride);
   // OIIO may report a failure only through its error state, so check both.
-  const bool ok = file.input->read_image(0, 0, channelBegin, channelEnd, OIIO::TypeFloat,
+  const bool ok = file.input->read_image(part, 0, channelBegin, channelEnd, OIIO::TypeFloat,
                                          buffer.data());
   if (!ok || file.input->has_error()) {
     std::string reason = file.input->geterror();
@@ -137,9 +179,9 @@ void requireChannelCount(const AovSource& source, std::size_t low, std::size_t h
 }
 
 // Every AOV must cover exactly the color's pixels; resampling is not taa's job.
-void requireSameWindow(const OpenExr& file, const OIIO::ImageSpec& colorSpec,
+void requireSameWindow(const OpenExr& file, int part, const OIIO::ImageSpec& colorSpec,
                        const std::string& aovName, int frame) {
-  const OIIO::ImageSpec& spec = file.input->spec();
+  const OIIO::ImageSpec& spec = file.parts[std::size_t(part)];
   if (spec.x != colorSpec.x || spec.y != colorSpec.y || spec.width != colorSpec.width ||
       spec.height != colorSpec.height) {
     throw Error("the " + aovName + " data window " + describeWindow(spec) +
@@ -173,24 +215,6 @@ Image toRgba(const Image& color, int& nonFiniteCount, Image& nonFiniteMask) {
   return rgba;
 }
 
-void convertDepth(Image& depth, const DepthConvention& convention) {
-  for (float& value : depth.pixels) {
-    // NaN and -inf carry no distance either: treat them as "no hit" too.
-    if (!std::isfinite(value) || value >= convention.noHitAbove) value = kInfinity;
-  }
-}
-
-void convertMotion(Image& motion, const MotionConvention& convention) {
-  const float xFactor = convention.scale * (convention.toPrevious ? 1.0f : -1.0f);
-  const float yFactor = xFactor * (convention.yUp ? -1.0f : 1.0f);
-  for (std::size_t i = 0; i + 1 < motion.pixels.size(); i += 2) {
-    const float x = motion.pixels[i] * xFactor;
-    const float y = motion.pixels[i + 1] * yFactor;
-    motion.pixels[i] = std::isfinite(x) ? x : 0.0f;
-    motion.pixels[i + 1] = std::isfinite(y) ? y : 0.0f;
-  }
-}
-
 // The header's camera, if it has both matrices. EXR matrices act on row vectors (p' = p M) and
 // are stored row by row; read as GLM's column-major storage, that is exactly the transpose,
 // which acts on column vectors as GLM expects.
@@ -204,9 +228,60 @@ std::optional<FrameCamera> headerCamera(const OIIO::ImageSpec& spec) {
   return camera;
 }
 
+RasterWindow rasterWindow(const OIIO::ImageSpec& spec) {
+  return {spec.x - spec.full_x, spec.y - spec.full_y,
+          spec.full_width > 0 ? spec.full_width : spec.width,
+          spec.full_height > 0 ? spec.full_height : spec.height};
+}
+
+// The sidecar's matrices when it has them for this frame, else the header's.
+void chooseCamera(FrameData& data, const CameraInputs& cameras) {
+  if (cameras.sidecar) {
+    const SidecarFrame& entry = cameras.sidecar->frame(data.frame);
+    if (entry.camera) {
+      data.camera = entry.camera;
+      data.ndc = CameraSidecar::kNdc;
+      return;
+    }
+  }
+  data.camera = headerCamera(data.colorSpec);
+  data.ndc = cameras.headerNdc;
+}
+
+PixelRay pixelRayFor(const FrameData& data, const DepthConvention& convention,
+                     const std::string& depthPath) {
+  if (data.camera) return cameraPixelRay(*data.camera, data.window, data.ndc);
+  if (convention.horizontalFovDegrees) {
+    return pinholePixelRay(*convention.horizontalFovDegrees, data.window);
+  }
+  throw Error("radial depth needs the camera: worldToCamera/worldToNDC in the color header, a "
+              "camera sidecar, or a field of view (--depth-fov)",
+              {depthPath, data.frame, ""});
+}
+
+// Channels of the color part whose names match any pattern, in file order, types kept.
+ExtraChannels readPassthrough(OpenExr& file, int part, const std::vector<std::string>& patterns,
+                              int frame) {
+  ExtraChannels extra;
+  if (patterns.empty()) return extra;
+  const OIIO::ImageSpec& spec = file.parts[std::size_t(part)];
+  for (int c = 0; c < spec.nchannels; ++c) {
+    const std::string& name = spec.channelnames[std::size_t(c)];
+    const bool matches = std::any_of(patterns.begin(), patterns.end(), [&](const std::string& p) {
+      return ::fnmatch(p.c_str(), name.c_str(), 0) == 0;
+    });
+    if (!matches) continue;
+    extra.names.push_back(name);
+    extra.formats.push_back(spec.channelformat(c) == OIIO::TypeHalf ? OIIO::TypeHalf
+                                                                   : OIIO::TypeFloat);
+  }
+  if (!extra.names.empty()) extra.image = readChannels(file, part, extra.names, "color", frame);
+  return extra;
+}
+
 }  // namespace
 
-FrameData readFrame(const AovLayout& layout, int frame) {
+FrameData readFrame(const AovLayout& layout, int frame, const CameraInputs& cameras) {
   if (layout.color.pattern.empty()) {
     throw Error("no color file pattern given", {"", frame, ""});
   }
@@ -220,26 +295,32 @@ FrameData readFrame(const AovLayout& layout, int frame) {
 
   FileSet files(frame);
   OpenExr& colorFile = files.get(data.colorPath, "color");
-  data.colorSpec = colorFile.input->spec();
-  data.color = toRgba(readChannels(colorFile, layout.color.channels, "color", frame),
+  const int colorPart = findPart(colorFile, layout.color, "color", frame);
+  data.colorSpec = colorFile.parts[std::size_t(colorPart)];
+  data.color = toRgba(readChannels(colorFile, colorPart, layout.color.channels, "color", frame),
                       data.nonFiniteColorValues, data.nonFiniteMask);
-  data.camera = headerCamera(data.colorSpec);
-  data.window = {data.colorSpec.x - data.colorSpec.full_x, data.colorSpec.y - data.colorSpec.full_y,
-                 data.colorSpec.full_width > 0 ? data.colorSpec.full_width : data.colorSpec.width,
-                 data.colorSpec.full_height > 0 ? data.colorSpec.full_height
-                                                : data.colorSpec.height};
+  data.window = rasterWindow(data.colorSpec);
+  chooseCamera(data, cameras);
+  data.passthrough = readPassthrough(colorFile, colorPart, layout.passthrough, frame);
 
   if (layout.depth) {
     OpenExr& file = files.get(aovPath(*layout.depth, data.colorPath, frame), "depth");
-    requireSameWindow(file, data.colorSpec, "depth", frame);
-    data.depth = readChannels(file, layout.depth->channels, "depth", frame);
-    convertDepth(data.depth, layout.depthConvention);
+    const int part = findPart(file, *layout.depth, "depth", frame);
+    requireSameWindow(file, part, data.colorSpec, "depth", frame);
+    data.depth = readChannels(file, part, layout.depth->channels, "depth", frame);
+    if (layout.depthConvention.kind == DepthKind::Radial) {
+      radialToPlanar(data.depth, pixelRayFor(data, layout.depthConvention, file.path),
+                     layout.depthConvention.noHitAbove);
+    } else {
+      convertDepth(data.depth, layout.depthConvention);
+    }
   }
   if (layout.motion) {
     OpenExr& file = files.get(aovPath(*layout.motion, data.colorPath, frame), "motion");
-    requireSameWindow(file, data.colorSpec, "motion", frame);
-    data.motion = readChannels(file, layout.motion->channels, "motion", frame);
-    convertMotion(data.motion, layout.motionConvention);
+    const int part = findPart(file, *layout.motion, "motion", frame);
+    requireSameWindow(file, part, data.colorSpec, "motion", frame);
+    data.motion = readChannels(file, part, layout.motion->channels, "motion", frame);
+    convertMotion(data.motion, layout.motionConvention, data.window);
   }
   return data;
 }

@@ -3,11 +3,12 @@
 
 #include <OpenImageIO/imageio.h>
 
+#include <optional>
 #include <string>
 
-#include <optional>
-
 #include "io/aov_layout.h"
+#include "io/camera_sidecar.h"
+#include "io/exr_writer.h"
 #include "resolve/camera.h"
 #include "util/image.h"
 
@@ -20,21 +21,32 @@ struct FrameData {
   Image motion;  // 2 channels, pixels, y down, to previous; empty if the layout has no motion
   int nonFiniteColorValues = 0;   // how many color values were NaN/Inf and scrubbed to 0
   Image nonFiniteMask;            // 1 channel: 1 where a color value was scrubbed, else 0
-  std::optional<FrameCamera> camera;  // from the color header's worldToCamera + worldToNDC
+  std::optional<FrameCamera> camera;  // from the sidecar, else the color header's
+                                      // worldToCamera + worldToNDC
+  NdcConvention ndc = NdcConvention::ZeroOneYDown;  // the convention of camera->worldToNdc
   RasterWindow window;            // the data window's place in the display window
-  OIIO::ImageSpec colorSpec;      // the color file's header: windows and metadata for output
+  OIIO::ImageSpec colorSpec;      // the color part's header: windows and metadata for output
   std::string colorPath;
+  ExtraChannels passthrough;      // the layout's pass-through channels, types kept
 };
 
-// Reads frame `frame`. All images cover the color file's data window. An AOV with an empty
+// Where camera matrices come from besides the color header.
+struct CameraInputs {
+  NdcConvention headerNdc = NdcConvention::ZeroOneYDown;  // of the headers' worldToNDC
+  const CameraSidecar* sidecar = nullptr;  // its entries with matrices replace the header's
+};
+
+// Reads frame `frame`. All images cover the color part's data window. An AOV with an empty
 // pattern is read from the color file, which is opened once. Channels are looked up by name in
-// subimage 0, in the order the layout lists them (not the file's order).
-// Conversions: color NaN/Inf -> 0 (counted), 3 channels -> A = 1; depth at or above
-// noHitAbove, NaN or +-Inf -> +inf; motion per MotionConvention, then NaN/Inf -> 0.
+// the AOV's part (multi-part files: by part name, or the first part holding every channel), in
+// the order the layout lists them (not the file's order). Scanline and tiled files alike.
+// Conversions: color NaN/Inf -> 0 (counted), 3 channels -> A = 1; depth per DepthConvention
+// (radial depth uses the frame's camera, else the convention's field of view); motion per
+// MotionConvention (Ndc and Uv units refer to the display window), then NaN/Inf -> 0.
 // Throws taa::Error naming file, frame and channel for: a missing or unreadable file, a non-EXR
-// (e.g. a PNG, whatever its name), truncated or corrupt file, a missing channel (listing those
-// available), a wrong channel count for an AOV, depth/motion windows that differ from color's
-// (stating both).
-FrameData readFrame(const AovLayout& layout, int frame);
+// (e.g. a PNG, whatever its name), truncated or corrupt file, a missing part (listing those
+// available), a missing channel (listing those available), a wrong channel count for an AOV,
+// depth/motion windows that differ from color's (stating both), radial depth without a camera.
+FrameData readFrame(const AovLayout& layout, int frame, const CameraInputs& cameras = {});
 
 }  // namespace taa::io

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "taa/error.h"
+#include "util/number_text.h"
 
 namespace taa {
 namespace {
@@ -25,31 +26,19 @@ struct Entry {
 }
 
 float parseNumber(const std::string& name, const std::string& value, float lo, float hi) {
-  std::size_t used = 0;
-  float number = 0.0f;
-  try {
-    number = std::stof(value, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
+  const std::optional<float> number = parseFloatText(value);
   std::ostringstream range;
   range << "a number in [" << lo << ", " << hi << "]";
-  if (used != value.size() || !(number >= lo && number <= hi)) reject(name, value, range.str());
-  return number;
+  if (!number || !(*number >= lo && *number <= hi)) reject(name, value, range.str());
+  return *number;
 }
 
 int parseInteger(const std::string& name, const std::string& value, int lo) {
-  std::size_t used = 0;
-  int number = 0;
-  try {
-    number = std::stoi(value, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used != value.size() || number < lo) {
+  const std::optional<int> number = parseIntText(value);
+  if (!number || *number < lo) {
     reject(name, value, lo == INT32_MIN ? "an integer" : "an integer >= " + std::to_string(lo));
   }
-  return number;
+  return *number;
 }
 
 std::string formatNumber(float v) {

@@ -2,11 +2,14 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <optional>
 #include <set>
 
+#include "io/camera_sidecar.h"
 #include "io/frame_reader.h"
 #include "io/sequence_pattern.h"
 #include "resolve/jitter.h"
+#include "resolve/option_registry.h"
 #include "resolve/resolver.h"
 #include "taa/error.h"
 
@@ -51,7 +54,77 @@ io::ExtraChannels debugChannels(const Image& debug, const Image& nonFiniteMask) 
   return extra;
 }
 
+// Pass-through channels minus those the resolved color is written as (the resolve wins).
+io::ExtraChannels passthroughWithout(const io::ExtraChannels& all,
+                                     const std::vector<std::string>& colorNames) {
+  io::ExtraChannels kept;
+  std::vector<std::size_t> keep;
+  for (std::size_t c = 0; c < all.names.size(); ++c) {
+    if (std::find(colorNames.begin(), colorNames.end(), all.names[c]) == colorNames.end()) {
+      keep.push_back(c);
+    }
+  }
+  if (keep.empty()) return kept;
+  kept.image = Image(all.image.width, all.image.height, int(keep.size()));
+  for (std::size_t c : keep) {
+    kept.names.push_back(all.names[c]);
+    kept.formats.push_back(all.formats[c]);
+  }
+  for (std::size_t i = 0, n = std::size_t(kept.image.width) * kept.image.height; i < n; ++i) {
+    for (std::size_t k = 0; k < keep.size(); ++k) {
+      kept.image.pixels[i * keep.size() + k] = all.image.pixels[i * all.names.size() + keep[k]];
+    }
+  }
+  return kept;
+}
+
+// The frame's jitter from the job's source.
+glm::vec2 jitterOf(const SequenceJob& job, const io::FrameData& data,
+                   const io::CameraSidecar* sidecar) {
+  switch (job.jitterSource) {
+    case JobJitterSource::Options: return frameJitter(data.frame, job.resolve.jitter);
+    case JobJitterSource::Sidecar: return sidecar->jitter(data.frame);
+    case JobJitterSource::HeaderAttribute: break;
+  }
+  const OIIO::ParamValue* value = data.colorSpec.find_attribute(job.jitterAttribute);
+  if (!value || value->type().basetype != OIIO::TypeDesc::FLOAT ||
+      value->type().numelements() * value->type().aggregate != 2) {
+    throw Error("the color header has no jitter attribute " + job.jitterAttribute +
+                    " of two floats (v2f, pixels, y down)",
+                {data.colorPath, data.frame, ""});
+  }
+  const float* xy = static_cast<const float*>(value->data());
+  return glm::vec2(xy[0], xy[1]);
+}
+
+// "name=value; ..." for every resolve option, plus the jitter source when not the options'.
+std::string optionsAttribute(const SequenceJob& job) {
+  std::string text;
+  for (const OptionInfo& option : resolveOptionList()) {
+    text += (text.empty() ? "" : "; ") + option.name + "=" +
+            resolveOptionValue(job.resolve, option.name);
+  }
+  if (job.jitterSource == JobJitterSource::HeaderAttribute) {
+    text += "; jitter-source=header:" + job.jitterAttribute;
+  } else if (job.jitterSource == JobJitterSource::Sidecar) {
+    text += "; jitter-source=sidecar";
+  }
+  return text;
+}
+
 }  // namespace
+
+std::vector<std::string> outputChannelNames(const SequenceJob& job) {
+  if (!job.outputChannels.empty()) return job.outputChannels;
+  std::vector<std::string> names = job.layout.color.channels;
+  if (names.size() == 3) {
+    // "ViewLayer.Combined.R" -> "ViewLayer.Combined.A"; "R" -> "A".
+    const std::string& red = names[0];
+    const std::size_t dot = red.rfind('.');
+    names.push_back(dot == std::string::npos ? "A" : red.substr(0, dot + 1) + "A");
+  }
+  return names;
+}
 
 void validateSequenceJob(const SequenceJob& job) {
   if (job.frames.empty()) throw Error("no frames to resolve", {job.layout.color.pattern});
@@ -60,6 +133,20 @@ void validateSequenceJob(const SequenceJob& job) {
     throw Error("output pattern has no frame number placeholder (#, @ or %0Nd) but " +
                     std::to_string(job.frames.size()) + " frames are resolved",
                 {job.outputPattern});
+  }
+  if (job.jitterSource == JobJitterSource::Sidecar && job.cameraSidecar.empty()) {
+    throw Error("jitter from the sidecar needs a camera sidecar (--camera-sidecar FILE)");
+  }
+  if (outputChannelNames(job).size() != 4) {
+    throw Error("the output needs 4 color channel names (--out-ch R,G,B,A)");
+  }
+  if (!job.cameraSidecar.empty()) {
+    // Every frame must have its entry before any frame is written.
+    const io::CameraSidecar sidecar = io::CameraSidecar::load(job.cameraSidecar);
+    for (int frame : job.frames) {
+      if (job.jitterSource == JobJitterSource::Sidecar) sidecar.jitter(frame);
+      sidecar.frame(frame);
+    }
   }
   std::set<std::string> inputs;
   for (int frame : job.frames) {
@@ -81,6 +168,12 @@ void validateSequenceJob(const SequenceJob& job) {
 
 void runSequenceJob(const SequenceJob& job, const JobCallbacks& callbacks) {
   validateSequenceJob(job);
+  std::optional<io::CameraSidecar> sidecar;
+  if (!job.cameraSidecar.empty()) sidecar = io::CameraSidecar::load(job.cameraSidecar);
+  io::CameraInputs cameras{job.ndc, sidecar ? &*sidecar : nullptr};
+  io::WriteOptions write = job.write;
+  write.rgbaNames = outputChannelNames(job);
+  const std::string options = optionsAttribute(job);
   auto context = gl::Context::create(job.backend, callbacks.log);
   Resolver resolver(*context, job.resolve);
   resolver.setDebugOutput(job.debugLayers);
@@ -97,15 +190,15 @@ void runSequenceJob(const SequenceJob& job, const JobCallbacks& callbacks) {
         index == 0 || job.frames[index - 1] != frame - 1 || job.resetFrames.count(frame) > 0;
     if (report.historyReset) resolver.resetHistory();
 
-    io::FrameData data = io::readFrame(job.layout, frame);
+    io::FrameData data = io::readFrame(job.layout, frame, cameras);
     ResolveInput input;
     input.color = &data.color;
     input.depth = data.depth.empty() ? nullptr : &data.depth;
     input.motion = data.motion.empty() ? nullptr : &data.motion;
-    input.jitter = frameJitter(frame, job.resolve.jitter);
+    input.jitter = jitterOf(job, data, sidecar ? &*sidecar : nullptr);
     input.camera = data.camera ? &*data.camera : nullptr;
     input.window = data.window;
-    input.ndc = job.ndc;
+    input.ndc = data.ndc;
     Image output;
     try {
       output = resolver.resolve(input);
@@ -119,9 +212,12 @@ void runSequenceJob(const SequenceJob& job, const JobCallbacks& callbacks) {
     report.nonFiniteColorValues = data.nonFiniteColorValues;
     OIIO::ImageSpec spec = data.colorSpec;
     spec.attribute("taa:version", TAA_VERSION_STRING);
-    io::writeExrAtomic(report.outputPath, output, spec, job.write,
-                       job.debugLayers ? debugChannels(resolver.lastDebug(), data.nonFiniteMask)
-                                       : io::ExtraChannels{});
+    spec.attribute("taa:options", options);
+    io::ExtraChannels extra = passthroughWithout(data.passthrough, write.rgbaNames);
+    if (job.debugLayers) {
+      io::appendExtraChannels(extra, debugChannels(resolver.lastDebug(), data.nonFiniteMask));
+    }
+    io::writeExrAtomic(report.outputPath, output, spec, write, extra);
     if (callbacks.frameDone) callbacks.frameDone(report);
   }
 }

@@ -15,6 +15,11 @@
 
 namespace taa {
 
+// Where each frame's jitter comes from. Options: the resolve options' JitterOptions (Halton or
+// none); HeaderAttribute: a float[2] attribute of the color header (pixels, x right, y down);
+// Sidecar: the camera sidecar's "jitter" entry.
+enum class JobJitterSource { Options, HeaderAttribute, Sidecar };
+
 struct SequenceJob {
   io::AovLayout layout;        // where color, depth and motion come from
   std::vector<int> frames;     // frames to resolve, in order
@@ -25,7 +30,16 @@ struct SequenceJob {
   std::set<int> resetFrames;   // frames that start a new history (cuts)
   bool debugLayers = false;    // write the resolver's diagnostics as extra layers
   NdcConvention ndc = NdcConvention::ZeroOneYDown;  // of the headers' worldToNDC
+  JobJitterSource jitterSource = JobJitterSource::Options;
+  std::string jitterAttribute = "taa:jitter";  // for HeaderAttribute
+  std::string cameraSidecar;   // JSON file (io/camera_sidecar.h); empty: none
+  // Output color channel names (4). Empty: the color input's names (a missing alpha gets the
+  // red channel's prefix + "A"), so the output can replace the input in a comp.
+  std::vector<std::string> outputChannels;
 };
+
+// The output's 4 color channel names for `job` (see SequenceJob::outputChannels).
+std::vector<std::string> outputChannelNames(const SequenceJob& job);
 
 struct FrameReport {
   int index = 0;  // position in job.frames, 0-based

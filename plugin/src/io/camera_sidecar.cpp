@@ -1,0 +1,108 @@
+#include "io/camera_sidecar.h"
+
+#include <glm/gtc/type_ptr.hpp>
+#include <nlohmann/json.hpp>
+
+#include <fstream>
+
+#include "taa/error.h"
+#include "util/number_text.h"
+
+namespace taa::io {
+namespace {
+
+using nlohmann::json;
+
+// A column-major 4x4 matrix from 16 numbers.
+glm::dmat4 readMatrix(const json& value, const char* key, const ErrorContext& context) {
+  if (!value.is_array() || value.size() != 16) {
+    throw Error(std::string("sidecar entry \"") + key + "\" must be an array of 16 numbers",
+                context);
+  }
+  double numbers[16];
+  for (int i = 0; i < 16; ++i) {
+    if (!value[i].is_number()) {
+      throw Error(std::string("sidecar entry \"") + key + "\" holds a non-number", context);
+    }
+    numbers[i] = value[i].get<double>();
+  }
+  return glm::make_mat4(numbers);
+}
+
+SidecarFrame readEntry(const json& entry, const ErrorContext& context) {
+  if (!entry.is_object()) throw Error("sidecar frame entry must be an object", context);
+  SidecarFrame frame;
+  const bool hasView = entry.contains("view"), hasProjection = entry.contains("projection");
+  if (hasView != hasProjection) {
+    throw Error("sidecar frame entry needs both \"view\" and \"projection\" (or neither)",
+                context);
+  }
+  if (hasView) {
+    const glm::dmat4 view = readMatrix(entry["view"], "view", context);
+    const glm::dmat4 projection = readMatrix(entry["projection"], "projection", context);
+    // OpenGL's eye space looks down -z; taa's camera space looks down +z (EXR convention).
+    glm::dmat4 flipZ(1.0);
+    flipZ[2][2] = -1.0;
+    frame.camera = FrameCamera{flipZ * view, projection * view};
+  }
+  if (entry.contains("jitter")) {
+    const json& j = entry["jitter"];
+    if (!j.is_array() || j.size() != 2 || !j[0].is_number() || !j[1].is_number()) {
+      throw Error("sidecar entry \"jitter\" must be [jx, jy] in pixels", context);
+    }
+    frame.jitter = glm::vec2(j[0].get<float>(), j[1].get<float>());
+  }
+  return frame;
+}
+
+int parseFrameKey(const std::string& key, const std::string& path) {
+  const std::optional<int> frame = parseIntText(key);
+  if (!frame) throw Error("sidecar frame key \"" + key + "\" is not a frame number", {path});
+  return *frame;
+}
+
+}  // namespace
+
+CameraSidecar CameraSidecar::load(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw Error("cannot read the camera sidecar", {path});
+  json document;
+  try {
+    document = json::parse(in);
+  } catch (const json::exception& e) {
+    throw Error(std::string("the camera sidecar is not valid JSON: ") + e.what(), {path});
+  }
+  if (!document.is_object() || !document.contains("frames") || !document["frames"].is_object()) {
+    throw Error("the camera sidecar has no \"frames\" object", {path});
+  }
+  CameraSidecar sidecar;
+  sidecar.path_ = path;
+  for (const auto& [key, entry] : document["frames"].items()) {
+    const int frame = parseFrameKey(key, path);
+    sidecar.frames_[frame] = readEntry(entry, {path, frame, ""});
+  }
+  return sidecar;
+}
+
+const SidecarFrame& CameraSidecar::frame(int frame) const {
+  const auto found = frames_.find(frame);
+  if (found == frames_.end()) throw Error("the camera sidecar has no entry for this frame",
+                                          {path_, frame, ""});
+  return found->second;
+}
+
+const FrameCamera& CameraSidecar::camera(int frame) const {
+  const SidecarFrame& entry = this->frame(frame);
+  if (!entry.camera) {
+    throw Error("the camera sidecar's entry has no view/projection matrices", {path_, frame, ""});
+  }
+  return *entry.camera;
+}
+
+glm::vec2 CameraSidecar::jitter(int frame) const {
+  const SidecarFrame& entry = this->frame(frame);
+  if (!entry.jitter) throw Error("the camera sidecar's entry has no jitter", {path_, frame, ""});
+  return *entry.jitter;
+}
+
+}  // namespace taa::io

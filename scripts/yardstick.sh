@@ -1,0 +1,21 @@
+#!/usr/bin/env bash
+# The quality yardstick (DESIGN.md section 7, docs/QUALITY.md): builds taa-yardstick, taatool
+# and taa-scenegen into ./build (or $TAA_BUILD_DIR), generates the scenes (cached in
+# build/yardstick/scenes until the generator changes), runs taatool on each and prints the table.
+#
+#   bash scripts/yardstick.sh                       # all scenes, all configurations, and
+#                                                   # rewrite docs/QUALITY.md
+#   bash scripts/yardstick.sh --scenes wires,cut --configs classic \
+#        --config reinhard="--bracket taa_reinhard"  # a quick comparison, table printed only
+set -euo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+build="${TAA_BUILD_DIR:-$root/build}"
+cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
+cmake --build "$build" -j"$(nproc)" --target taa-yardstick taatool taa-scenegen >/dev/null
+
+args=(--work "$build/yardstick")
+if [ "$#" -eq 0 ]; then
+  # The full run is the one the page records.
+  args+=(--doc "$root/docs/QUALITY.md" --command "bash scripts/yardstick.sh")
+fi
+exec "$build/bin/taa-yardstick" "${args[@]}" "$@"
