@@ -10,6 +10,7 @@ packages=(
   nlohmann-json3-dev  # header-only JSON: the camera sidecar
   libgl-dev libegl-dev libegl-mesa0 libosmesa6-dev libgl1-mesa-dri  # headless GL on llvmpipe
   libgtest-dev
+  pybind11-dev python3-dev python3-numpy python3-pytest python3-openimageio  # Python module
 )
 
 sudo_cmd=()

@@ -1,0 +1,156 @@
+/* taa's stable C ABI: a temporal anti-aliasing node for hosts (compositors, OpenFX plugins,
+ * scripting languages). Plain C99; no C++ exception ever crosses it.
+ *
+ * ABI version rule. TAA_ABI_VERSION is one integer, compared with taa_abi_version() at run time.
+ * Bump it for any change that can break a host compiled against an older header: a removed or
+ * renamed function, a changed signature, a changed struct layout or enum value, or a changed
+ * meaning of an existing parameter. Adding a function, a parameter name or an enum value at the
+ * end is compatible and does not bump it. Structs are never grown in place: a new layout is a
+ * new struct (taa_buffer2 ...).
+ *
+ * Usage:
+ *   taa_node* node = NULL;
+ *   if (taa_node_create(NULL, &node) != TAA_OK) puts(taa_last_error());
+ *   taa_node_set_float(node, "blend", 0.1f);
+ *   for each frame: fill a taa_frame (taa_frame_init), taa_node_push_frame, taa_node_read_output
+ *   taa_node_destroy(node);
+ *
+ * Conventions (the same as taatool's; see docs/ARCHITECTURE.md):
+ * - Color is RGBA (3 channels read A = 1), premultiplied. NaN/Inf become 0.
+ * - Depth is one channel, positive planar distance; values >= "depth-nohit", NaN and Inf mean
+ *   nothing was hit.
+ * - Motion is two channels in pixels, converted by the "motion-y", "motion-to" and
+ *   "motion-scale" parameters exactly as taatool's flags of the same names.
+ * - A buffer's row order (taa_buffer.y_up) only says how rows are laid out in memory; it never
+ *   changes the meaning of vector values. Jitter is always in pixels, x right, y down.
+ *
+ * Threads: a node may be used from any thread, one call at a time. A call made while another
+ * thread is inside a call on the same node returns TAA_ERROR_BUSY at once (the message goes to
+ * taa_last_error(), not to the node). Different nodes run in parallel; each owns its own OpenGL
+ * context, made current on the calling thread for the duration of a call and released after.
+ */
+#ifndef TAA_TAA_H
+#define TAA_TAA_H
+
+#include <stddef.h>
+
+#include "taa/export.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#define TAA_ABI_VERSION 1
+
+typedef enum taa_status {
+  TAA_OK = 0,
+  TAA_ERROR_INVALID_ARGUMENT = 1, /* null pointer, wrong size, bad value */
+  TAA_ERROR_UNKNOWN_PARAMETER = 2, /* taa_node_set_* with a name the node does not have */
+  TAA_ERROR_WRONG_TYPE = 3,        /* taa_node_set_* of the wrong type for that parameter */
+  TAA_ERROR_NO_OUTPUT = 4,         /* taa_node_read_output before any frame was pushed */
+  TAA_ERROR_BUSY = 5,              /* another thread is inside a call on this node */
+  TAA_ERROR_GL = 6,                /* no OpenGL context could be made, or GL failed */
+  TAA_ERROR_INTERNAL = 7           /* anything else; the message says what */
+} taa_status;
+
+typedef enum taa_pixel_type { TAA_PIXEL_HALF = 1, TAA_PIXEL_FLOAT = 2 } taa_pixel_type;
+
+typedef enum taa_gl_backend {
+  TAA_GL_AUTO = 0, /* EGL, falling back to OSMesa */
+  TAA_GL_EGL = 1,
+  TAA_GL_OSMESA = 2
+} taa_gl_backend;
+
+/* An image in host memory. Pixel (x, row) lives at
+ *   (char*)data + row * row_stride_bytes + x * pixel_stride_bytes,
+ * channel c at + c * (2 or 4 bytes). Strides may be negative; 0 means tightly packed. Row 0 is
+ * the top row, or the bottom one when y_up is non-zero (OpenFX, OpenGL). */
+typedef struct taa_buffer {
+  void* data;
+  int width, height;
+  int channels;                /* channels this buffer holds for taa (see each use) */
+  taa_pixel_type type;
+  ptrdiff_t row_stride_bytes;   /* 0 = width * pixel stride */
+  ptrdiff_t pixel_stride_bytes; /* 0 = channels * sizeof(type); larger skips unused channels */
+  int y_up;                     /* non-zero: row 0 is the bottom row */
+} taa_buffer;
+
+/* One frame's inputs. Start from taa_frame_init() and fill what you have. */
+typedef struct taa_frame {
+  int frame;                 /* frame number: Halton index, and history continuity */
+  const taa_buffer* color;   /* required: 3 or 4 channels */
+  const taa_buffer* depth;   /* optional (NULL): 1 channel; enables motion dilation */
+  const taa_buffer* motion;  /* optional (NULL): 2 channels; NULL = static scene */
+  int has_jitter;            /* 0: jitter from the frame number and the "jitter*" parameters */
+  float jitter[2];           /* with has_jitter: sample offset, pixels, x right, y down */
+  /* Optional camera, 16 floats each, row-major row-vector matrices as in EXR headers
+   * (worldToCamera: left-handed, +z forward; worldToNDC per the "ndc" parameter). With both,
+   * the resolve can reproject from depth ("camera-motion"); the buffer is the whole display
+   * window. */
+  const float* world_to_camera;
+  const float* world_to_ndc;
+} taa_frame;
+
+typedef struct taa_create_options {
+  taa_gl_backend gl_backend;
+  int defer_context; /* non-zero: make the GL context on first use instead of at create */
+} taa_create_options;
+
+typedef struct taa_node taa_node;
+
+/* The ABI version of the loaded library (compare with TAA_ABI_VERSION). */
+TAA_API int taa_abi_version(void);
+/* The library's version string, e.g. "0.1.0". */
+TAA_API const char* taa_version_string(void);
+
+/* The message of the last failed call on this thread that had no node to keep it: a null
+ * handle, a failed create, TAA_ERROR_BUSY. "" when none. Valid until the next call. */
+TAA_API const char* taa_last_error(void);
+
+TAA_API void taa_create_options_init(taa_create_options* options);
+TAA_API void taa_frame_init(taa_frame* frame);
+
+/* Creates a node (options may be NULL for defaults). On failure *node is NULL and
+ * taa_last_error() says why. */
+TAA_API taa_status taa_node_create(const taa_create_options* options, taa_node** node);
+/* Destroys a node and its GL context; NULL is ignored. Not while another thread uses it. */
+TAA_API void taa_node_destroy(taa_node* node);
+
+/* The message of the node's last failed call ("" after a success). Valid until its next call. */
+TAA_API const char* taa_node_last_error(const taa_node* node);
+
+/* Parameters by name: taatool's option names without "--" ('_' may stand for '-').
+ * - The resolve options, listed by `taatool --list-options` (e.g. "blend", "jitter",
+ *   "jitter-offset", "rectify", "motion-dilation", "bracket"), take any of the three setters:
+ *   the value is given to the option as taatool's text (ints as decimals, floats exactly).
+ * - The node's input conventions are typed: "motion-y" down|up, "motion-to" previous|next
+ *   (strings); "motion-scale", "depth-nohit" (floats); "reset-on-gap" 0/1 (int, default 1:
+ *   history restarts when a frame is not the previous one + 1, as taatool does); "ndc"
+ *   zero-one-y-down|minus-one-one-y-up (string: what world_to_ndc maps to).
+ * An unknown name gives TAA_ERROR_UNKNOWN_PARAMETER, a typed parameter set with another type
+ * TAA_ERROR_WRONG_TYPE, a value out of range TAA_ERROR_INVALID_ARGUMENT; the message names the
+ * parameter. Changes apply from the next pushed frame. */
+TAA_API taa_status taa_node_set_int(taa_node* node, const char* name, int value);
+TAA_API taa_status taa_node_set_float(taa_node* node, const char* name, float value);
+TAA_API taa_status taa_node_set_string(taa_node* node, const char* name, const char* value);
+
+/* Resolves one frame. All buffers must have the same width and height. */
+TAA_API taa_status taa_node_push_frame(taa_node* node, const taa_frame* frame);
+
+/* Copies the last resolved frame into `output` (3 or 4 channels, the frame's size). */
+TAA_API taa_status taa_node_read_output(taa_node* node, const taa_buffer* output);
+
+/* The camera matrices given with the last pushed frame (16 floats each, row-major). Either
+ * pointer may be NULL; a matrix the frame did not carry comes back as zeros. Returns
+ * TAA_ERROR_NO_OUTPUT before the first frame. */
+TAA_API taa_status taa_node_get_camera(taa_node* node, float world_to_camera[16],
+                                       float world_to_ndc[16]);
+
+/* Forgets history: the next frame is resolved on its own (a cut). */
+TAA_API taa_status taa_node_reset_history(taa_node* node);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* TAA_TAA_H */

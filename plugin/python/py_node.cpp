@@ -1,0 +1,192 @@
+#include "py_node.h"
+
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "python_error.h"
+#include "taa/taa.h"
+
+namespace py = pybind11;
+
+namespace taa::python {
+namespace {
+
+// A numpy array seen as a taa_buffer. Keeps the (possibly converted) array alive.
+struct ArrayBuffer {
+  py::array array;
+  taa_buffer buffer{};
+};
+
+// Float16 and float32 arrays are used in place when each pixel's channels are contiguous;
+// anything else is copied to float32 first. Shapes: (H, W, C), or (H, W) for one channel.
+ArrayBuffer asBuffer(const py::handle& object, const char* what, int minChannels,
+                     int maxChannels) {
+  py::array array = py::array::ensure(object);
+  if (!array) throw PythonError(std::string(what) + " is not an array");
+  const bool isHalf = array.dtype().kind() == 'f' && array.itemsize() == 2;
+  const bool isFloat = array.dtype().kind() == 'f' && array.itemsize() == 4;
+  if (!isHalf && !isFloat) array = py::array_t<float, py::array::forcecast>::ensure(array);
+  if (array.ndim() == 2 && minChannels == 1) {
+    array = array.attr("reshape")(array.shape(0), array.shape(1), 1);
+  }
+  if (array.ndim() != 3) {
+    throw PythonError(std::string(what) + " must have shape (height, width, channels), got " +
+                      std::to_string(array.ndim()) + " dimensions");
+  }
+  const int channels = int(array.shape(2));
+  if (channels < minChannels || channels > maxChannels) {
+    throw PythonError(std::string(what) + " must have " + std::to_string(minChannels) +
+                      (minChannels == maxChannels ? "" : " to " + std::to_string(maxChannels)) +
+                      " channels, has " + std::to_string(channels));
+  }
+  // The C ABI takes any row and pixel stride but needs each pixel's channels packed.
+  if (array.strides(2) != array.itemsize() || array.strides(1) < array.itemsize() * channels) {
+    array = py::module_::import("numpy").attr("ascontiguousarray")(array);
+  }
+  ArrayBuffer result;
+  result.buffer.data = const_cast<void*>(array.data());
+  result.buffer.height = int(array.shape(0));
+  result.buffer.width = int(array.shape(1));
+  result.buffer.channels = channels;
+  result.buffer.type = array.itemsize() == 2 ? TAA_PIXEL_HALF : TAA_PIXEL_FLOAT;
+  result.buffer.row_stride_bytes = array.strides(0);
+  result.buffer.pixel_stride_bytes = array.strides(1);
+  result.array = std::move(array);
+  return result;
+}
+
+std::vector<float> matrix16(const py::handle& object, const char* what) {
+  auto values = py::array_t<float, py::array::c_style | py::array::forcecast>::ensure(object);
+  if (!values || values.size() != 16) throw PythonError(std::string(what) + " needs 16 values");
+  return std::vector<float>(values.data(), values.data() + 16);
+}
+
+class Node {
+ public:
+  Node(const std::string& gl, const py::kwargs& parameters) {
+    taa_create_options options;
+    taa_create_options_init(&options);
+    if (gl == "egl") {
+      options.gl_backend = TAA_GL_EGL;
+    } else if (gl == "osmesa") {
+      options.gl_backend = TAA_GL_OSMESA;
+    } else if (gl != "auto") {
+      throw PythonError("gl must be auto, egl or osmesa, got \"" + gl + "\"");
+    }
+    if (taa_node_create(&options, &node_) != TAA_OK) throw PythonError(taa_last_error());
+    for (const auto& [name, value] : parameters) set(name.cast<std::string>(), value);
+  }
+  ~Node() { taa_node_destroy(node_); }
+  Node(const Node&) = delete;
+  Node& operator=(const Node&) = delete;
+
+  // The value's Python type picks the setter; an int given for a float parameter is accepted.
+  void set(const std::string& name, const py::handle& value) {
+    taa_status status;
+    if (py::isinstance<py::str>(value)) {
+      status = taa_node_set_string(node_, name.c_str(), value.cast<std::string>().c_str());
+    } else if (py::isinstance<py::bool_>(value) || py::isinstance<py::int_>(value)) {
+      status = taa_node_set_int(node_, name.c_str(), value.cast<int>());
+      if (status == TAA_ERROR_WRONG_TYPE && !py::isinstance<py::bool_>(value)) {
+        status = taa_node_set_float(node_, name.c_str(), value.cast<float>());
+      }
+    } else {
+      status = taa_node_set_float(node_, name.c_str(), value.cast<float>());
+    }
+    check(status);
+  }
+
+  py::array_t<float> push(const py::handle& color, const py::handle& depth,
+                          const py::handle& motion, int frame, const py::handle& jitter,
+                          bool yUp, const py::handle& worldToCamera,
+                          const py::handle& worldToNdc) {
+    ArrayBuffer colorBuffer = asBuffer(color, "color", 3, 4);
+    std::optional<ArrayBuffer> depthBuffer, motionBuffer;
+    if (!depth.is_none()) depthBuffer = asBuffer(depth, "depth", 1, 1);
+    if (!motion.is_none()) motionBuffer = asBuffer(motion, "motion", 2, 2);
+    for (taa_buffer* b : {&colorBuffer.buffer, depthBuffer ? &depthBuffer->buffer : nullptr,
+                          motionBuffer ? &motionBuffer->buffer : nullptr}) {
+      if (b) b->y_up = yUp ? 1 : 0;
+    }
+    taa_frame input;
+    taa_frame_init(&input);
+    input.frame = frame;
+    input.color = &colorBuffer.buffer;
+    input.depth = depthBuffer ? &depthBuffer->buffer : nullptr;
+    input.motion = motionBuffer ? &motionBuffer->buffer : nullptr;
+    if (!jitter.is_none()) {
+      const auto values = jitter.cast<std::vector<float>>();
+      if (values.size() != 2) throw PythonError("jitter needs two values (x, y), pixels, y down");
+      input.has_jitter = 1;
+      input.jitter[0] = values[0];
+      input.jitter[1] = values[1];
+    }
+    std::vector<float> w2c, w2ndc;
+    if (!worldToCamera.is_none()) input.world_to_camera = (w2c = matrix16(worldToCamera,
+                                                           "world_to_camera")).data();
+    if (!worldToNdc.is_none()) input.world_to_ndc = (w2ndc = matrix16(worldToNdc,
+                                                     "world_to_ndc")).data();
+
+    const int height = colorBuffer.buffer.height, width = colorBuffer.buffer.width;
+    py::array_t<float> output({height, width, 4});
+    taa_buffer out{};
+    out.data = output.mutable_data();
+    out.width = width;
+    out.height = height;
+    out.channels = 4;
+    out.type = TAA_PIXEL_FLOAT;
+    out.y_up = yUp ? 1 : 0;
+    taa_status status;
+    {
+      py::gil_scoped_release release;
+      status = taa_node_push_frame(node_, &input);
+      if (status == TAA_OK) status = taa_node_read_output(node_, &out);
+    }
+    check(status);
+    return output;
+  }
+
+  void reset() { check(taa_node_reset_history(node_)); }
+
+ private:
+  void check(taa_status status) const {
+    if (status == TAA_OK) return;
+    // Busy and NULL-handle errors are reported per thread, not on the node.
+    const char* message = status == TAA_ERROR_BUSY ? taa_last_error() : taa_node_last_error(node_);
+    throw PythonError(message);
+  }
+
+  taa_node* node_ = nullptr;
+};
+
+}  // namespace
+
+void registerNode(py::module_& module) {
+  py::class_<Node>(module, "Node", R"doc(A resolve node with its own OpenGL context.
+
+Node(gl="auto", **parameters): parameters by taatool's option names with '_' for '-' (taa.h;
+`taatool --list-options`), e.g. blend=0.1, jitter="none", jitter_offset=-1000, rectify="clip",
+motion_y="up", motion_to="next", motion_scale=0.5, depth_nohit=1e9, reset_on_gap=1.
+One thread at a time per node; different nodes may run in parallel threads.)doc")
+      .def(py::init<const std::string&, const py::kwargs&>(), py::arg("gl") = "auto")
+      .def("set", &Node::set, py::arg("name"), py::arg("value"),
+           "Sets one parameter (see the class doc); raises taa.Error naming a bad one.")
+      .def("push", &Node::push, py::arg("color"), py::arg("depth") = py::none(),
+           py::arg("motion") = py::none(), py::arg("frame") = 0, py::arg("jitter") = py::none(),
+           py::arg("y_up") = false, py::arg("world_to_camera") = py::none(),
+           py::arg("world_to_ndc") = py::none(),
+           R"doc(Resolves one frame and returns RGBA float32 of shape (height, width, 4).
+
+color: (H, W, 3|4) float16/float32 (others are converted), premultiplied; depth: (H, W) or
+(H, W, 1); motion: (H, W, 2) in pixels, converted by the motion_* parameters. frame: the
+frame number (Halton jitter index; a gap resets history). jitter: (x, y) in pixels, y down,
+instead of Halton. y_up: row 0 of every array, output included, is the bottom row.)doc")
+      .def("reset", &Node::reset, "Forgets history: the next frame stands alone (a cut).");
+}
+
+}  // namespace taa::python

@@ -1,0 +1,169 @@
+#include "capi/buffer_conversion.h"
+
+#include <Imath/half.h>
+
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <string>
+
+#include "capi/status_error.h"
+#include "io/aov_conversion.h"
+
+namespace taa::capi {
+namespace {
+
+[[noreturn]] void invalid(const std::string& what) {
+  throw StatusError(TAA_ERROR_INVALID_ARGUMENT, what);
+}
+
+// Resolved addressing of one buffer: where pixel (x, y) of the top-first raster lives.
+struct Layout {
+  char* data = nullptr;
+  int width = 0, height = 0, channels = 0;
+  bool half = false;
+  std::ptrdiff_t rowStride = 0, pixelStride = 0;
+  bool yUp = false;
+
+  char* pixel(int x, int topRow) const {
+    const int row = yUp ? height - 1 - topRow : topRow;
+    return data + row * rowStride + x * pixelStride;
+  }
+  float read(const char* pixel, int channel) const {
+    if (half) {
+      std::uint16_t bits;
+      std::memcpy(&bits, pixel + channel * 2, 2);
+      Imath::half value;
+      value.setBits(bits);
+      return float(value);
+    }
+    float value;
+    std::memcpy(&value, pixel + channel * 4, 4);
+    return value;
+  }
+  void write(char* pixel, int channel, float value) const {
+    if (half) {
+      const std::uint16_t bits = Imath::half(value).bits();
+      std::memcpy(pixel + channel * 2, &bits, 2);
+    } else {
+      std::memcpy(pixel + channel * 4, &value, 4);
+    }
+  }
+};
+
+// Checks a buffer's fields; channel counts outside [minChannels, maxChannels] are an error.
+Layout describe(const taa_buffer& buffer, const char* what, int minChannels, int maxChannels,
+                int expectWidth = 0, int expectHeight = 0) {
+  const std::string name = what;
+  if (!buffer.data) invalid(name + " buffer has no data (NULL)");
+  if (buffer.width <= 0 || buffer.height <= 0) {
+    invalid(name + " buffer size must be positive, got " + std::to_string(buffer.width) + "x" +
+            std::to_string(buffer.height));
+  }
+  if (expectWidth > 0 && (buffer.width != expectWidth || buffer.height != expectHeight)) {
+    invalid(name + " is " + std::to_string(buffer.width) + "x" + std::to_string(buffer.height) +
+            " but color is " + std::to_string(expectWidth) + "x" + std::to_string(expectHeight));
+  }
+  if (buffer.channels < minChannels || buffer.channels > maxChannels) {
+    const std::string expected = minChannels == maxChannels
+                                     ? std::to_string(minChannels)
+                                     : std::to_string(minChannels) + " or " +
+                                           std::to_string(maxChannels);
+    invalid(name + " buffer must have " + expected + " channels, has " +
+            std::to_string(buffer.channels));
+  }
+  if (buffer.type != TAA_PIXEL_HALF && buffer.type != TAA_PIXEL_FLOAT) {
+    invalid(name + " buffer has an unknown pixel type " + std::to_string(int(buffer.type)));
+  }
+  Layout layout;
+  layout.data = static_cast<char*>(buffer.data);
+  layout.width = buffer.width;
+  layout.height = buffer.height;
+  layout.channels = buffer.channels;
+  layout.half = buffer.type == TAA_PIXEL_HALF;
+  layout.yUp = buffer.y_up != 0;
+  const std::ptrdiff_t packedPixel = std::ptrdiff_t(buffer.channels) * (layout.half ? 2 : 4);
+  layout.pixelStride = buffer.pixel_stride_bytes == 0 ? packedPixel : buffer.pixel_stride_bytes;
+  if (layout.pixelStride < packedPixel) {
+    invalid(name + " buffer pixel stride " + std::to_string(buffer.pixel_stride_bytes) +
+            " bytes is less than its " + std::to_string(packedPixel) + " bytes of channels");
+  }
+  const std::ptrdiff_t packedRow = layout.pixelStride * buffer.width;
+  layout.rowStride = buffer.row_stride_bytes == 0 ? packedRow : buffer.row_stride_bytes;
+  if (std::abs(layout.rowStride) < packedRow) {
+    invalid(name + " buffer row stride " + std::to_string(buffer.row_stride_bytes) +
+            " bytes is less than a row of " + std::to_string(packedRow) + " bytes");
+  }
+  return layout;
+}
+
+Image readChannels(const Layout& layout) {
+  Image image(layout.width, layout.height, layout.channels);
+  float* out = image.pixels.data();
+  for (int y = 0; y < layout.height; ++y) {
+    for (int x = 0; x < layout.width; ++x) {
+      const char* pixel = layout.pixel(x, y);
+      for (int c = 0; c < layout.channels; ++c) *out++ = layout.read(pixel, c);
+    }
+  }
+  return image;
+}
+
+}  // namespace
+
+Image importColor(const taa_buffer& buffer, int* nonFinite) {
+  const Layout layout = describe(buffer, "color", 3, 4);
+  Image rgba(layout.width, layout.height, 4);
+  int scrubbed = 0;
+  float* out = rgba.pixels.data();
+  for (int y = 0; y < layout.height; ++y) {
+    for (int x = 0; x < layout.width; ++x, out += 4) {
+      const char* pixel = layout.pixel(x, y);
+      out[3] = 1.0f;  // a color without alpha is opaque, as io::readFrame reads it
+      for (int c = 0; c < layout.channels; ++c) {
+        const float value = layout.read(pixel, c);
+        if (std::isfinite(value)) {
+          out[c] = value;
+        } else {
+          out[c] = 0.0f;
+          ++scrubbed;
+        }
+      }
+    }
+  }
+  if (nonFinite) *nonFinite = scrubbed;
+  return rgba;
+}
+
+Image importDepth(const taa_buffer& buffer, const io::DepthConvention& convention,
+                  int expectWidth, int expectHeight) {
+  Image depth = readChannels(describe(buffer, "depth", 1, 1, expectWidth, expectHeight));
+  if (convention.kind == io::DepthKind::Radial) {
+    invalid("radial depth needs the pixel rays; give planar depth to the C ABI");
+  }
+  io::convertDepth(depth, convention);  // the same code io::readFrame runs on files
+  return depth;
+}
+
+Image importMotion(const taa_buffer& buffer, const io::MotionConvention& convention,
+                   int expectWidth, int expectHeight) {
+  Image motion = readChannels(describe(buffer, "motion", 2, 2, expectWidth, expectHeight));
+  RasterWindow window;  // the buffer is the whole display window
+  window.displayWidth = motion.width;
+  window.displayHeight = motion.height;
+  io::convertMotion(motion, convention, window);  // the same code io::readFrame runs on files
+  return motion;
+}
+
+void exportColor(const Image& image, const taa_buffer& buffer) {
+  const Layout layout = describe(buffer, "output", 3, 4, image.width, image.height);
+  for (int y = 0; y < layout.height; ++y) {
+    for (int x = 0; x < layout.width; ++x) {
+      const float* in = image.at(x, y);
+      char* pixel = layout.pixel(x, y);
+      for (int c = 0; c < layout.channels; ++c) layout.write(pixel, c, in[c]);
+    }
+  }
+}
+
+}  // namespace taa::capi

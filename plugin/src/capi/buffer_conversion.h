@@ -1,0 +1,29 @@
+// Host buffers (taa_buffer: half or float, any strides, rows top or bottom first) to and from
+// taa's internal Image (float, interleaved, rows top first), with the input conventions of
+// DESIGN.md section 3 applied on the way in exactly as io::readFrame applies them to files.
+#pragma once
+
+#include "io/aov_layout.h"
+#include "taa/taa.h"
+#include "util/image.h"
+
+namespace taa::capi {
+
+// Each throws StatusError(TAA_ERROR_INVALID_ARGUMENT) naming `what` for a null or malformed
+// buffer, a channel count it cannot take, or (width, height) different from `expectWidth`,
+// `expectHeight` when those are positive.
+
+// 3 or 4 channels -> RGBA (missing A = 1), NaN/Inf -> 0 (counted in *nonFinite if given).
+Image importColor(const taa_buffer& buffer, int* nonFinite = nullptr);
+// 1 channel -> planar depth per `convention` (io::convertDepth); radial depth is refused.
+Image importDepth(const taa_buffer& buffer, const io::DepthConvention& convention,
+                  int expectWidth, int expectHeight);
+// 2 channels -> pixels, y down, to the previous frame, per `convention` (io::convertMotion,
+// the buffer being the whole display window); NaN/Inf -> 0.
+Image importMotion(const taa_buffer& buffer, const io::MotionConvention& convention,
+                   int expectWidth, int expectHeight);
+
+// Writes RGBA `image` into `buffer` (3 or 4 channels, the image's size); 3 drops alpha.
+void exportColor(const Image& image, const taa_buffer& buffer);
+
+}  // namespace taa::capi

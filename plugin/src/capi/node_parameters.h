@@ -1,0 +1,33 @@
+// The parameters a C ABI node has, set by name with typed values (taa.h lists them). They
+// mirror taatool's flags: the resolve options plus the input conventions taatool applies to
+// files, which the node applies to host buffers.
+#pragma once
+
+#include <string>
+
+#include "io/aov_layout.h"
+#include "resolve/camera.h"
+#include "taa/options.h"
+
+namespace taa::capi {
+
+struct NodeParameters {
+  ResolveOptions resolve;
+  io::MotionConvention motion;
+  io::DepthConvention depth;
+  bool resetOnGap = true;  // restart history when frame != previous frame + 1 (as taatool)
+  NdcConvention ndc = NdcConvention::ZeroOneYDown;  // what the frames' world_to_ndc maps to
+};
+
+// Names are taatool's option names ('_' may stand for '-'). Resolve options (the registry of
+// resolve/option_registry.h) accept any of the three types, converted to taatool's text; the
+// node's own input-convention parameters are typed. Each throws StatusError:
+// TAA_ERROR_UNKNOWN_PARAMETER for a name the node does not have (the message lists the names),
+// TAA_ERROR_WRONG_TYPE for a typed parameter set with another type, TAA_ERROR_INVALID_ARGUMENT
+// for a value out of range. `parameters` is unchanged on error.
+void setIntParameter(NodeParameters& parameters, const std::string& name, int value);
+void setFloatParameter(NodeParameters& parameters, const std::string& name, float value);
+void setStringParameter(NodeParameters& parameters, const std::string& name,
+                        const std::string& value);
+
+}  // namespace taa::capi

@@ -1,0 +1,83 @@
+#include "ofx/describe.h"
+
+#include <vector>
+
+#include "ofx/host_suites.h"
+#include "ofx/plugin_parameters.h"
+
+namespace taa::ofx {
+namespace {
+
+void setStrings(OfxPropertySetHandle props, const char* name,
+                const std::vector<const char*>& values) {
+  for (int i = 0; i < int(values.size()); ++i) {
+    suites().properties->propSetString(props, name, i, values[i]);
+  }
+}
+
+OfxStatus defineClip(OfxImageEffectHandle descriptor, const char* name,
+                     const std::vector<const char*>& components, bool optional) {
+  const HostSuites& s = suites();
+  OfxPropertySetHandle props = nullptr;
+  const OfxStatus status = s.effects->clipDefine(descriptor, name, &props);
+  if (status != kOfxStatOK) return status;
+  setStrings(props, kOfxImageEffectPropSupportedComponents, components);
+  s.properties->propSetInt(props, kOfxImageEffectPropTemporalClipAccess, 0, 1);
+  s.properties->propSetInt(props, kOfxImageEffectPropSupportsTiles, 0, 0);
+  s.properties->propSetInt(props, kOfxImageClipPropOptional, 0, optional ? 1 : 0);
+  return kOfxStatOK;
+}
+
+}  // namespace
+
+OfxStatus describe(OfxImageEffectHandle descriptor) {
+  const HostSuites& s = suites();
+  OfxPropertySetHandle props = nullptr;
+  if (s.effects->getPropertySet(descriptor, &props) != kOfxStatOK) return kOfxStatErrBadHandle;
+  s.properties->propSetString(props, kOfxPropLabel, 0, "TAA Resolve");
+  s.properties->propSetString(props, kOfxImageEffectPluginPropGrouping, 0, "taa");
+  s.properties->propSetString(
+      props, kOfxPropPluginDescription, 0,
+      "Temporal anti-aliasing resolve of a jittered render with its depth and motion AOVs. "
+      "Frame t is resolved from the clip's first frame (see History Frames), exactly as "
+      "taatool resolves the sequence.");
+  setStrings(props, kOfxImageEffectPropSupportedContexts,
+             {kOfxImageEffectContextFilter, kOfxImageEffectContextGeneral});
+  setStrings(props, kOfxImageEffectPropSupportedPixelDepths, {kOfxBitDepthHalf, kOfxBitDepthFloat});
+  s.properties->propSetInt(props, kOfxImageEffectPropTemporalClipAccess, 0, 1);
+  s.properties->propSetInt(props, kOfxImageEffectPropSupportsTiles, 0, 0);
+  s.properties->propSetInt(props, kOfxImageEffectPropSupportsMultiResolution, 0, 1);
+  s.properties->propSetInt(props, kOfxImageEffectPropSupportsMultipleClipDepths, 0, 1);
+  s.properties->propSetInt(props, kOfxImageEffectPluginPropHostFrameThreading, 0, 0);
+  // Each render thread gets its own node and GL context, so concurrent renders are safe.
+  s.properties->propSetString(props, kOfxImageEffectPluginRenderThreadSafety, 0,
+                              kOfxImageEffectRenderFullySafe);
+  return kOfxStatOK;
+}
+
+OfxStatus describeInContext(OfxImageEffectHandle descriptor) {
+  OfxStatus status = defineClip(descriptor, kOfxImageEffectSimpleSourceClipName,
+                                {kOfxImageComponentRGBA, kOfxImageComponentRGB}, false);
+  if (status == kOfxStatOK) {
+    status = defineClip(descriptor, kDepthClip,
+                        {kOfxImageComponentAlpha, kOfxImageComponentRGBA, kOfxImageComponentRGB},
+                        true);
+  }
+  if (status == kOfxStatOK) {
+    status = defineClip(descriptor, kMotionClip,
+                        {kOfxImageComponentRGBA, kOfxImageComponentRGB}, true);
+  }
+  if (status == kOfxStatOK) {
+    status = defineClip(descriptor, kOfxImageEffectOutputClipName, {kOfxImageComponentRGBA},
+                        false);
+  }
+  if (status != kOfxStatOK) return status;
+  OfxParamSetHandle parameters = nullptr;
+  if (suites().effects->getParamSet(descriptor, &parameters) != kOfxStatOK) {
+    return kOfxStatErrBadHandle;
+  }
+  defineParameters(parameters);
+  return kOfxStatOK;
+}
+
+}  // namespace taa::ofx

@@ -1,0 +1,15 @@
+// kOfxActionDescribe and kOfxImageEffectActionDescribeInContext: what the plugin declares.
+#pragma once
+
+#include "ofx/ofx_abi.h"
+
+namespace taa::ofx {
+
+// Clip names. Source and Output are the standard filter clips.
+constexpr const char* kDepthClip = "Depth";
+constexpr const char* kMotionClip = "Motion";
+
+OfxStatus describe(OfxImageEffectHandle descriptor);
+OfxStatus describeInContext(OfxImageEffectHandle descriptor);
+
+}  // namespace taa::ofx

@@ -1,0 +1,128 @@
+// The bundle's entry points (OfxGetNumberOfPlugins, OfxGetPlugin) and the action dispatch of
+// the TAA Resolve image effect. No exception leaves mainEntry: failures become kOfxStatFailed
+// with the message posted to the host's message suite.
+#include <cmath>
+#include <cstring>
+#include <exception>
+#include <string>
+
+#include "ofx/describe.h"
+#include "ofx/host_suites.h"
+#include "ofx/instance.h"
+#include "taa/version.h"
+
+namespace taa::ofx {
+namespace {
+
+Instance* instanceOf(OfxImageEffectHandle effect) {
+  OfxPropertySetHandle props = nullptr;
+  void* data = nullptr;
+  if (suites().effects->getPropertySet(effect, &props) != kOfxStatOK) return nullptr;
+  suites().properties->propGetPointer(props, kOfxPropInstanceData, 0, &data);
+  return static_cast<Instance*>(data);
+}
+
+OfxStatus createInstance(OfxImageEffectHandle effect) {
+  OfxPropertySetHandle props = nullptr;
+  if (suites().effects->getPropertySet(effect, &props) != kOfxStatOK) return kOfxStatErrBadHandle;
+  auto* instance = new Instance(effect);
+  suites().properties->propSetPointer(props, kOfxPropInstanceData, 0, instance);
+  return kOfxStatOK;
+}
+
+OfxStatus destroyInstance(OfxImageEffectHandle effect) {
+  Instance* instance = instanceOf(effect);
+  delete instance;
+  OfxPropertySetHandle props = nullptr;
+  if (suites().effects->getPropertySet(effect, &props) == kOfxStatOK) {
+    suites().properties->propSetPointer(props, kOfxPropInstanceData, 0, nullptr);
+  }
+  return kOfxStatOK;
+}
+
+OfxStatus framesNeeded(OfxImageEffectHandle effect, OfxPropertySetHandle inArgs,
+                       OfxPropertySetHandle outArgs) {
+  Instance* instance = instanceOf(effect);
+  if (!instance) return kOfxStatErrBadHandle;
+  double time = 0.0;
+  suites().properties->propGetDouble(inArgs, kOfxPropTime, 0, &time);
+  const OfxRangeD range = instance->framesNeeded(time);
+  const double values[2] = {range.min, range.max};
+  for (const char* clip : {kOfxImageEffectSimpleSourceClipName, kDepthClip, kMotionClip}) {
+    const std::string name = std::string(kOfxImageClipPropFrameRangePrefix) + clip;
+    suites().properties->propSetDoubleN(outArgs, name.c_str(), 2, values);
+  }
+  return kOfxStatOK;
+}
+
+OfxStatus clipPreferences(OfxPropertySetHandle outArgs) {
+  suites().properties->propSetString(outArgs, kOfxImageEffectPropPreMultiplication, 0,
+                                     kOfxImagePreMultiplied);
+  return kOfxStatOK;
+}
+
+OfxStatus render(OfxImageEffectHandle effect, OfxPropertySetHandle inArgs) {
+  Instance* instance = instanceOf(effect);
+  if (!instance) return kOfxStatErrBadHandle;
+  const HostSuites& s = suites();
+  double time = 0.0;
+  double scale[2] = {1.0, 1.0};
+  OfxRectI window{};
+  s.properties->propGetDouble(inArgs, kOfxPropTime, 0, &time);
+  s.properties->propGetDoubleN(inArgs, kOfxImageEffectPropRenderScale, 2, scale);
+  s.properties->propGetIntN(inArgs, kOfxImageEffectPropRenderWindow, 4, &window.x1);
+  instance->render(time, window, scale[0]);
+  return kOfxStatOK;
+}
+
+OfxStatus dispatch(const char* action, OfxImageEffectHandle effect, OfxPropertySetHandle inArgs,
+                   OfxPropertySetHandle outArgs) {
+  const std::string a = action;
+  if (a == kOfxActionLoad) return fetchSuites() ? kOfxStatOK : kOfxStatErrMissingHostFeature;
+  if (a == kOfxActionUnload) return kOfxStatOK;
+  if (a == kOfxActionDescribe) return describe(effect);
+  if (a == kOfxImageEffectActionDescribeInContext) return describeInContext(effect);
+  if (a == kOfxActionCreateInstance) return createInstance(effect);
+  if (a == kOfxActionDestroyInstance) return destroyInstance(effect);
+  if (a == kOfxImageEffectActionGetFramesNeeded) return framesNeeded(effect, inArgs, outArgs);
+  if (a == kOfxImageEffectActionGetClipPreferences) return clipPreferences(outArgs);
+  if (a == kOfxImageEffectActionRender) return render(effect, inArgs);
+  return kOfxStatReplyDefault;
+}
+
+OfxStatus mainEntry(const char* action, const void* handle, OfxPropertySetHandle inArgs,
+                    OfxPropertySetHandle outArgs) {
+  if (!action) return kOfxStatErrBadHandle;
+  auto effect = static_cast<OfxImageEffectHandle>(const_cast<void*>(handle));
+  try {
+    return dispatch(action, effect, inArgs, outArgs);
+  } catch (const std::exception& e) {
+    reportError(effect, (std::string("TAA Resolve: ") + e.what()).c_str());
+  } catch (...) {
+    reportError(effect, "TAA Resolve: unknown error");
+  }
+  return kOfxStatFailed;
+}
+
+void setHost(OfxHost* host) { suites().host = host; }
+
+OfxPlugin plugin = {kOfxImageEffectPluginApi,
+                    1,
+                    "org.taa.TAAResolve",
+                    TAA_VERSION_MAJOR,
+                    TAA_VERSION_MINOR,
+                    setHost,
+                    mainEntry};
+
+}  // namespace
+}  // namespace taa::ofx
+
+extern "C" {
+
+__attribute__((visibility("default"))) int OfxGetNumberOfPlugins(void) { return 1; }
+
+__attribute__((visibility("default"))) OfxPlugin* OfxGetPlugin(int nth) {
+  return nth == 0 ? &taa::ofx::plugin : nullptr;
+}
+
+}  // extern "C"

@@ -1,0 +1,181 @@
+#include "ofx/plugin_parameters.h"
+
+#include <stdexcept>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include "ofx/host_suites.h"
+
+namespace taa::ofx {
+namespace {
+
+// Parameter names: stable, they are saved in hosts' scripts.
+constexpr const char* kBlend = "blend";
+constexpr const char* kRectify = "rectify";
+constexpr const char* kDilateMotion = "dilateMotion";
+constexpr const char* kJitter = "jitter";
+constexpr const char* kJitterOffset = "jitterOffset";
+constexpr const char* kJitterPeriod = "jitterPeriod";
+constexpr const char* kMotionY = "motionY";
+constexpr const char* kMotionTo = "motionTo";
+constexpr const char* kMotionScale = "motionScale";
+constexpr const char* kDepthNoHit = "depthNoHit";
+constexpr const char* kHistoryFrames = "historyFrames";
+
+void check(OfxStatus status, const std::string& what) {
+  if (status != kOfxStatOK) {
+    throw std::runtime_error(what + " failed (OFX status " + std::to_string(status) + ")");
+  }
+}
+
+OfxPropertySetHandle define(OfxParamSetHandle set, const char* type, const char* name,
+                            const char* label, const char* hint) {
+  const HostSuites& s = suites();
+  OfxPropertySetHandle props = nullptr;
+  check(s.parameters->paramDefine(set, type, name, &props), std::string("define ") + name);
+  s.properties->propSetString(props, kOfxPropLabel, 0, label);
+  s.properties->propSetString(props, kOfxParamPropHint, 0, hint);
+  s.properties->propSetInt(props, kOfxParamPropAnimates, 0, 0);
+  return props;
+}
+
+void defineDouble(OfxParamSetHandle set, const char* name, const char* label, const char* hint,
+                  double value, double min, double max) {
+  const HostSuites& s = suites();
+  OfxPropertySetHandle props = define(set, kOfxParamTypeDouble, name, label, hint);
+  s.properties->propSetDouble(props, kOfxParamPropDefault, 0, value);
+  s.properties->propSetDouble(props, kOfxParamPropMin, 0, min);
+  s.properties->propSetDouble(props, kOfxParamPropMax, 0, max);
+  s.properties->propSetDouble(props, kOfxParamPropDisplayMin, 0, min);
+  s.properties->propSetDouble(props, kOfxParamPropDisplayMax, 0, max);
+}
+
+void defineInt(OfxParamSetHandle set, const char* name, const char* label, const char* hint,
+               int value, int min, int max) {
+  const HostSuites& s = suites();
+  OfxPropertySetHandle props = define(set, kOfxParamTypeInteger, name, label, hint);
+  s.properties->propSetInt(props, kOfxParamPropDefault, 0, value);
+  s.properties->propSetInt(props, kOfxParamPropMin, 0, min);
+  s.properties->propSetInt(props, kOfxParamPropMax, 0, max);
+}
+
+void defineBoolean(OfxParamSetHandle set, const char* name, const char* label, const char* hint,
+                   bool value) {
+  OfxPropertySetHandle props = define(set, kOfxParamTypeBoolean, name, label, hint);
+  suites().properties->propSetInt(props, kOfxParamPropDefault, 0, value ? 1 : 0);
+}
+
+void defineChoice(OfxParamSetHandle set, const char* name, const char* label, const char* hint,
+                  const std::vector<const char*>& options) {
+  const HostSuites& s = suites();
+  OfxPropertySetHandle props = define(set, kOfxParamTypeChoice, name, label, hint);
+  for (int i = 0; i < int(options.size()); ++i) {
+    s.properties->propSetString(props, kOfxParamPropChoiceOption, i, options[i]);
+  }
+  s.properties->propSetInt(props, kOfxParamPropDefault, 0, 0);
+}
+
+OfxParamHandle handle(OfxParamSetHandle set, const char* name) {
+  OfxParamHandle param = nullptr;
+  check(suites().parameters->paramGetHandle(set, name, &param, nullptr),
+        std::string("parameter ") + name);
+  return param;
+}
+
+double getDouble(OfxParamSetHandle set, const char* name, OfxTime time) {
+  double value = 0.0;
+  check(suites().parameters->paramGetValueAtTime(handle(set, name), time, &value),
+        std::string("value of ") + name);
+  return value;
+}
+
+int getInt(OfxParamSetHandle set, const char* name, OfxTime time) {
+  int value = 0;
+  check(suites().parameters->paramGetValueAtTime(handle(set, name), time, &value),
+        std::string("value of ") + name);
+  return value;
+}
+
+void require(taa_node* node, taa_status status) {
+  if (status != TAA_OK) throw std::runtime_error(taa_node_last_error(node));
+}
+
+}  // namespace
+
+bool PluginSettings::operator==(const PluginSettings& o) const {
+  auto tie = [](const PluginSettings& s) {
+    return std::tie(s.blend, s.rectify, s.dilateMotion, s.jitter, s.jitterOffset,
+                    s.jitterPeriod, s.motionY, s.motionTo, s.motionScale, s.depthNoHit,
+                    s.historyFrames);
+  };
+  return tie(*this) == tie(o);
+}
+
+void defineParameters(OfxParamSetHandle set) {
+  defineDouble(set, kBlend, "Blend",
+               "Weight of the current frame in the exponential blend (taatool --blend).", 0.1,
+               0.001, 1.0);
+  defineChoice(set, kRectify, "Rectify",
+               "How history is brought into the current neighbourhood's colour box (none only "
+               "to diagnose ghosts).",
+               {"Variance Clip", "Clip", "Clamp", "None"});
+  defineBoolean(set, kDilateMotion, "Dilate Motion",
+                "Take motion from the closest-depth pixel of the 3x3 neighbourhood.", true);
+  defineChoice(set, kJitter, "Jitter", "How the renderer offset each frame's samples.",
+               {"Halton", "None"});
+  defineInt(set, kJitterOffset, "Jitter Offset", "Halton index = frame + offset.", 0, -1000000,
+            1000000);
+  defineInt(set, kJitterPeriod, "Jitter Period",
+            "The Halton index cycles through 1..period (0: no cycle).", 0, 0, 1024);
+  defineChoice(set, kMotionY, "Motion Y",
+               "Direction of the motion vectors' y values (not of the image rows).",
+               {"Down", "Up"});
+  defineChoice(set, kMotionTo, "Motion Points To",
+               "Whether vectors point to the previous or the next frame.",
+               {"Previous", "Next"});
+  defineDouble(set, kMotionScale, "Motion Scale",
+               "Multiplies motion vectors (given in full-resolution pixels).", 1.0, -1000.0,
+               1000.0);
+  defineDouble(set, kDepthNoHit, "Depth No-Hit", "Depth at or above this means no hit.", 1e9,
+               0.0, 1e30);
+  defineInt(set, kHistoryFrames, "History Frames",
+            "0: every frame is resolved from the clip's first frame, exactly as taatool. "
+            "N: from at most N frames back (faster for random access, approximate).",
+            0, 0, 100000);
+}
+
+PluginSettings readSettings(OfxImageEffectHandle effect, OfxTime time) {
+  OfxParamSetHandle set = nullptr;
+  check(suites().effects->getParamSet(effect, &set), "getParamSet");
+  PluginSettings s;
+  s.blend = getDouble(set, kBlend, time);
+  s.rectify = getInt(set, kRectify, time);
+  s.dilateMotion = getInt(set, kDilateMotion, time) != 0;
+  s.jitter = getInt(set, kJitter, time);
+  s.jitterOffset = getInt(set, kJitterOffset, time);
+  s.jitterPeriod = getInt(set, kJitterPeriod, time);
+  s.motionY = getInt(set, kMotionY, time);
+  s.motionTo = getInt(set, kMotionTo, time);
+  s.motionScale = getDouble(set, kMotionScale, time);
+  s.depthNoHit = getDouble(set, kDepthNoHit, time);
+  s.historyFrames = getInt(set, kHistoryFrames, time);
+  return s;
+}
+
+void applySettings(taa_node* node, const PluginSettings& s, double renderScale) {
+  require(node, taa_node_set_float(node, "blend", float(s.blend)));
+  static const char* const kRectifyNames[] = {"variance", "clip", "clamp", "none"};
+  if (s.rectify < 0 || s.rectify > 3) throw std::runtime_error("rectify choice out of range");
+  require(node, taa_node_set_string(node, "rectify", kRectifyNames[s.rectify]));
+  require(node, taa_node_set_string(node, "motion-dilation", s.dilateMotion ? "box" : "centre"));
+  require(node, taa_node_set_string(node, "jitter", s.jitter == 1 ? "none" : "halton"));
+  require(node, taa_node_set_int(node, "jitter-offset", s.jitterOffset));
+  require(node, taa_node_set_int(node, "jitter-period", s.jitterPeriod));
+  require(node, taa_node_set_string(node, "motion-y", s.motionY == 1 ? "up" : "down"));
+  require(node, taa_node_set_string(node, "motion-to", s.motionTo == 1 ? "next" : "previous"));
+  require(node, taa_node_set_float(node, "motion-scale", float(s.motionScale * renderScale)));
+  require(node, taa_node_set_float(node, "depth-nohit", float(s.depthNoHit)));
+}
+
+}  // namespace taa::ofx
