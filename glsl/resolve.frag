@@ -149,19 +149,32 @@ vec2 pixelMotion(ivec2 source, vec2 position, float depth) {
   return vectors;
 }
 
-// The previous frame's closest depth around `position`: the 2x2 texels bilinear history reads.
+// The previous frame's closest depth in the 3x3 texels around `position`. Generous on purpose:
+// a sub-pixel wire hits pixel centres only in some frames, and a tight footprint would call its
+// history disoccluded whenever this frame's centre sample hit it and the last one's did not.
 float previousDepthAround(vec2 position) {
   ivec2 maxPixel = textureSize(uPreviousDepth, 0) - 1;
-  ivec2 base = ivec2(floor(position - 0.5));
+  ivec2 centre = ivec2(floor(position));
   float closest = 1.0 / 0.0;
-  for (int i = 0; i < 4; ++i) {
-    ivec2 q = clamp(base + ivec2(i & 1, i >> 1), ivec2(0), maxPixel);
-    closest = min(closest, texelFetch(uPreviousDepth, q, 0).r);
+  for (int dy = -1; dy <= 1; ++dy) {
+    for (int dx = -1; dx <= 1; ++dx) {
+      ivec2 q = clamp(centre + ivec2(dx, dy), ivec2(0), maxPixel);
+      closest = min(closest, texelFetch(uPreviousDepth, q, 0).r);
+    }
   }
   return closest;
 }
 
-// True when the surface seen now was (about) where history claims: same depth within tolerance.
+// Disocclusion: the surface seen now was hidden in the previous frame, i.e. something nearer
+// than it stood there. One-sided on purpose: a previous depth *farther* than expected means a
+// surface appeared in front (or a sub-pixel wire was missed by the last frame's centre samples);
+// history is then merely stale colour, which rectification handles.
+bool wasHidden(float expected, float found, float tolerance) {
+  if (isinf(found)) return false;
+  return isinf(expected) || found < expected * (1.0 - tolerance);
+}
+
+// True when the previous depth confirms the same surface within `tolerance` (thin-feature hold).
 bool depthAgrees(float expected, float found, float tolerance) {
   if (isinf(expected) || isinf(found)) return isinf(expected) && isinf(found);
   return abs(found - expected) <= tolerance * expected;
@@ -229,7 +242,7 @@ void main() {
   if (uHasDepth && uHasPreviousDepth && uDepthTolerance > 0.0) {
     float expected = uHasCamera ? previousCameraDepth(position, depth) : depth;
     float found = previousDepthAround(previousPosition);
-    if (!depthAgrees(expected, found, uDepthTolerance)) {
+    if (wasHidden(expected, found, uDepthTolerance)) {
       writeResult(filtered, 1.0, 0.0, kDisoccluded, motion);
       return;
     }

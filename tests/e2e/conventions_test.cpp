@@ -13,6 +13,8 @@
 #include <fstream>
 #include <sstream>
 
+#include "resolve/option_registry.h"
+
 #include "scenegen/convention_writers.h"
 #include "scenegen/exr_output.h"
 #include "scenegen/scene_library.h"
@@ -79,8 +81,10 @@ class ConventionsTest : public ::testing::Test {
     return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, text.str()};
   }
 
+  // Conventions are compared without the tonemap bracket: its inverse near white would magnify
+  // the rounding differences between equivalent matrix paths past the tolerances here.
   void runOk(std::vector<std::string> args) const {
-    args.insert(args.end(), {"-d", "float", "-q"});
+    args.insert(args.end(), {"-d", "float", "-q", "--bracket", "none"});
     const ToolRun r = run(args);
     ASSERT_EQ(r.exitCode, 0) << r.err;
   }
@@ -299,7 +303,9 @@ TEST_F(ConventionsTest, OutputKeepsNamesTypeMetadataAndPassThroughChannels) {
   EXPECT_NE(out.spec.get_string_attribute("taa:version"), "");
   const std::string options = out.spec.get_string_attribute("taa:options");
   EXPECT_NE(options.find("blend=0.1"), std::string::npos) << options;
-  EXPECT_NE(options.find("rectify=variance"), std::string::npos) << options;
+  EXPECT_NE(options.find("rectify=" + resolveOptionValue(ResolveOptions{}, "rectify")),
+            std::string::npos)
+      << options;
   // Pass-through channels are the input's values, untouched.
   for (int c = 0; c < out.spec.nchannels; ++c) {
     const std::string& name = out.spec.channelnames[c];

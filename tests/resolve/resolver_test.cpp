@@ -65,6 +65,13 @@ void expectEqualsFilteredCurrent(const Image& output, const scenes::SceneFrame& 
   }
 }
 
+// Default options without the tonemap bracket, so the output is the filter's plain arithmetic.
+ResolveOptions withoutBracket() {
+  ResolveOptions options;
+  options.color.bracket = "none";
+  return options;
+}
+
 class ResolverTest : public ::testing::Test {
  protected:
   void SetUp() override { context_ = gl::Context::create(gl::Backend::Auto); }
@@ -84,14 +91,14 @@ Image resolveFrame(Resolver& resolver, const scenes::SceneFrame& frame) {
 
 TEST_F(ResolverTest, FirstFrameIsTheUnjitteredCurrentFrame) {
   auto scene = scenes::makeScene("moving_object", 64, 40);
-  Resolver resolver(*context_, ResolveOptions{});
+  Resolver resolver(*context_, withoutBracket());
   const scenes::SceneFrame frame = scene->render(3, settings_);
   expectEqualsFilteredCurrent(resolveFrame(resolver, frame), frame);
 }
 
 TEST_F(ResolverTest, OffScreenHistoryFallsBackToCurrentFrame) {
   auto scene = scenes::makeScene("static", 64, 40);
-  Resolver resolver(*context_, ResolveOptions{});
+  Resolver resolver(*context_, withoutBracket());
   resolveFrame(resolver, scene->render(1, settings_));
   scenes::SceneFrame frame = scene->render(2, settings_);
   for (float& v : frame.motion.pixels) v = 1000.0f;  // every pixel came from off-screen
@@ -100,7 +107,7 @@ TEST_F(ResolverTest, OffScreenHistoryFallsBackToCurrentFrame) {
 
 TEST_F(ResolverTest, ResetHistoryStartsOver) {
   auto scene = scenes::makeScene("static", 64, 40);
-  Resolver resolver(*context_, ResolveOptions{});
+  Resolver resolver(*context_, withoutBracket());
   resolveFrame(resolver, scene->render(1, settings_));
   resolveFrame(resolver, scene->render(2, settings_));
   resolver.resetHistory();

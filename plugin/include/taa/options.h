@@ -34,8 +34,10 @@ struct ColorOptions {
   // Colorspace (or role) of the input colour.
   std::string colorspaceIn = "scene_linear";
   // Working space of the resolve: a colorspace or named transform of the config, or "none"
-  // (no bracket: the resolve runs on input values).
-  std::string bracket = "none";
+  // (no bracket: the resolve runs on input values). The default, taa's shipped taa_reinhard, is
+  // worth +5 dB on the HDR scene of the yardstick (docs/QUALITY.md); with a user config that
+  // lacks it, name one of its spaces or "none".
+  std::string bracket = "taa_reinhard";
   // Colorspace (or role) of the output. Empty: the same as colorspaceIn.
   std::string colorspaceOut;
 };
@@ -87,7 +89,7 @@ struct ResolveOptions {
   //   Clamp         clamp each component to the min/max box (the textbook version)
   //   Clip          move it toward the filtered colour until it enters the min/max box
   //   VarianceClip  clip to mean +- varianceGamma sigma, intersected with the min/max box
-  Rectify rectify = Rectify::VarianceClip;
+  Rectify rectify = Rectify::Clip;
   // [program] Colour space of the neighbourhood box: YCoCg hugs natural colours tighter.
   BoxSpace boxSpace = BoxSpace::YCoCg;
   // [program] Neighbours forming the box: plus-shaped 5 or 3x3 9.
@@ -98,7 +100,7 @@ struct ResolveOptions {
   // 0..1: on pixels where depth confirms the same surface and motion is slow, keep this much of
   // the unrectified history, so sub-pixel wires the 3x3 box misses do not fade. Risk: ghosting of
   // shading changes (moving shadows, reflections) on static geometry.
-  float thinFeatureHold = 0.0f;
+  float thinFeatureHold = 1.0f;
   // Pixels per frame at which the thin-feature hold has faded out completely. > 0.
   float thinFeatureHoldSpeed = 2.0f;
 

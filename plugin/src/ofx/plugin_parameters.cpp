@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "ofx/host_suites.h"
+#include "resolve/option_registry.h"
 
 namespace taa::ofx {
 namespace {
@@ -13,6 +14,8 @@ namespace {
 // Parameter names: stable, they are saved in hosts' scripts.
 constexpr const char* kBlend = "blend";
 constexpr const char* kRectify = "rectify";
+// The Rectify choice's entries, as the option registry names them.
+const char* const kRectifyNames[] = {"variance", "clip", "clamp", "none"};
 constexpr const char* kDilateMotion = "dilateMotion";
 constexpr const char* kJitter = "jitter";
 constexpr const char* kJitterOffset = "jitterOffset";
@@ -67,13 +70,22 @@ void defineBoolean(OfxParamSetHandle set, const char* name, const char* label, c
 }
 
 void defineChoice(OfxParamSetHandle set, const char* name, const char* label, const char* hint,
-                  const std::vector<const char*>& options) {
+                  const std::vector<const char*>& options, int defaultIndex = 0) {
   const HostSuites& s = suites();
   OfxPropertySetHandle props = define(set, kOfxParamTypeChoice, name, label, hint);
   for (int i = 0; i < int(options.size()); ++i) {
     s.properties->propSetString(props, kOfxParamPropChoiceOption, i, options[i]);
   }
-  s.properties->propSetInt(props, kOfxParamPropDefault, 0, 0);
+  s.properties->propSetInt(props, kOfxParamPropDefault, 0, defaultIndex);
+}
+
+// Index of the library's default for a registry option among `names` (the host's choice order).
+int registryDefaultIndex(const char* option, const char* const* names, int count) {
+  const std::string value = taa::resolveOptionValue(taa::ResolveOptions{}, option);
+  for (int i = 0; i < count; ++i) {
+    if (value == names[i]) return i;
+  }
+  return 0;
 }
 
 OfxParamHandle handle(OfxParamSetHandle set, const char* name) {
@@ -119,7 +131,8 @@ void defineParameters(OfxParamSetHandle set) {
   defineChoice(set, kRectify, "Rectify",
                "How history is brought into the current neighbourhood's colour box (none only "
                "to diagnose ghosts).",
-               {"Variance Clip", "Clip", "Clamp", "None"});
+               {"Variance Clip", "Clip", "Clamp", "None"},
+               registryDefaultIndex("rectify", kRectifyNames, 4));
   defineBoolean(set, kDilateMotion, "Dilate Motion",
                 "Take motion from the closest-depth pixel of the 3x3 neighbourhood.", true);
   defineChoice(set, kJitter, "Jitter", "How the renderer offset each frame's samples.",
@@ -165,7 +178,6 @@ PluginSettings readSettings(OfxImageEffectHandle effect, OfxTime time) {
 
 void applySettings(taa_node* node, const PluginSettings& s, double renderScale) {
   require(node, taa_node_set_float(node, "blend", float(s.blend)));
-  static const char* const kRectifyNames[] = {"variance", "clip", "clamp", "none"};
   if (s.rectify < 0 || s.rectify > 3) throw std::runtime_error("rectify choice out of range");
   require(node, taa_node_set_string(node, "rectify", kRectifyNames[s.rectify]));
   require(node, taa_node_set_string(node, "motion-dilation", s.dilateMotion ? "box" : "centre"));
