@@ -246,6 +246,24 @@ TEST_F(TaatoolTest, BracketsListedAndChosen) {
               {"cannot load the OCIO config", "missing.ocio"});
 }
 
+TEST_F(TaatoolTest, PipelinedAndSerialRunsAreBitIdentical) {
+  const fs::path in = generate("in", scenes::OutputLayout::Separate, 1, 8);
+  for (const char* threads : {"0", "3"}) {
+    auto args = separateArgs(in, dir_ / (std::string("t") + threads) / "r.####.exr");
+    args.insert(args.end(), {"--threads", threads, "-d", "float"});
+    const RunResult r = run(args);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+  }
+  for (int f = 1; f <= 8; ++f) {
+    char name[32];
+    std::snprintf(name, sizeof name, "r.%04d.exr", f);
+    const auto serial = readPixels(dir_ / "t0" / name), pipelined = readPixels(dir_ / "t3" / name);
+    ASSERT_FALSE(serial.empty());
+    EXPECT_EQ(serial, pipelined) << name;
+  }
+  expectError(run({"--threads", "-1"}), {"--threads"});
+}
+
 TEST_F(TaatoolTest, HelpAndBadArguments) {
   const RunResult help = run({"--help"});
   EXPECT_EQ(help.exitCode, 0);

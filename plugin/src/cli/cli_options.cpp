@@ -203,6 +203,14 @@ CommandLine parseCommandLine(const std::vector<std::string>& args) {
          cl.job.write.compression = v;
        }},
       {"--gl", [&](const std::string& v) { cl.job.backend = gl::parseBackend(v); }},
+      {"--threads",
+       [&](const std::string& v) {
+         const std::optional<int> threads = parseIntText(v);
+         if (!threads || *threads < 0) {
+           throw Error("--threads expects an integer >= 0, got \"" + v + "\"");
+         }
+         cl.job.ioThreads = *threads;
+       }},
   };
   const std::map<std::string, std::function<void()>> flags = {
       {"--help", [&] { cl.help = true; }},
@@ -412,6 +420,8 @@ taa:options, the resolve options used):
 
 GL and diagnostics:
   --gl auto|egl|osmesa     OpenGL back end (default auto: EGL, falling back to OSMesa)
+  --threads N              frames read ahead and written behind while the GPU resolves
+                           (default 2; 0: one step after another). Output is identical.
   --info                   print GL vendor/renderer/version, OCIO and OIIO versions
   --list-brackets          list the tonemap brackets the active OCIO config offers
   --list-options           the resolve options as a Markdown table

@@ -1,7 +1,9 @@
 #include "resolve/sequence_job.h"
 
 #include <algorithm>
+#include <deque>
 #include <filesystem>
+#include <future>
 #include <optional>
 #include <set>
 
@@ -178,8 +180,29 @@ void runSequenceJob(const SequenceJob& job, const JobCallbacks& callbacks) {
   Resolver resolver(*context, job.resolve);
   resolver.setDebugOutput(job.debugLayers);
 
+  // Frames are read ahead and written behind on worker threads while the GL thread resolves, so
+  // decoding and encoding overlap the resolve. The resolve itself runs in frame order on this
+  // thread, so the output cannot depend on timing. With ioThreads 0 the same code runs serially
+  // (deferred tasks run when their result is taken). Queues are bounded: memory stays constant.
   const int count = static_cast<int>(job.frames.size());
+  const int inFlight = std::max(0, job.ioThreads);
+  const std::launch policy = inFlight > 0 ? std::launch::async : std::launch::deferred;
+  std::deque<std::future<io::FrameData>> reads;
+  int nextRead = 0;
+  std::deque<std::pair<std::future<void>, FrameReport>> writes;
+  auto finishOldestWrite = [&] {
+    writes.front().first.get();
+    if (callbacks.frameDone) callbacks.frameDone(writes.front().second);
+    writes.pop_front();
+  };
+
   for (int index = 0; index < count; ++index) {
+    for (; nextRead < count && nextRead <= index + inFlight; ++nextRead) {
+      const int frame = job.frames[nextRead];
+      reads.push_back(std::async(policy, [&job, frame, cameras] {
+        return io::readFrame(job.layout, frame, cameras);
+      }));
+    }
     const int frame = job.frames[index];
     FrameReport report;
     report.index = index;
@@ -190,7 +213,8 @@ void runSequenceJob(const SequenceJob& job, const JobCallbacks& callbacks) {
         index == 0 || job.frames[index - 1] != frame - 1 || job.resetFrames.count(frame) > 0;
     if (report.historyReset) resolver.resetHistory();
 
-    io::FrameData data = io::readFrame(job.layout, frame, cameras);
+    io::FrameData data = reads.front().get();
+    reads.pop_front();
     ResolveInput input;
     input.color = &data.color;
     input.depth = data.depth.empty() ? nullptr : &data.depth;
@@ -217,9 +241,16 @@ void runSequenceJob(const SequenceJob& job, const JobCallbacks& callbacks) {
     if (job.debugLayers) {
       io::appendExtraChannels(extra, debugChannels(resolver.lastDebug(), data.nonFiniteMask));
     }
-    io::writeExrAtomic(report.outputPath, output, spec, write, extra);
-    if (callbacks.frameDone) callbacks.frameDone(report);
+    writes.emplace_back(
+        std::async(policy,
+                   [path = report.outputPath, output = std::move(output), spec = std::move(spec),
+                    &write, extra = std::move(extra)] {
+                     io::writeExrAtomic(path, output, spec, write, extra);
+                   }),
+        report);
+    while (int(writes.size()) > inFlight) finishOldestWrite();
   }
+  while (!writes.empty()) finishOldestWrite();
 }
 
 }  // namespace taa

@@ -36,6 +36,9 @@ struct SequenceJob {
   // Output color channel names (4). Empty: the color input's names (a missing alpha gets the
   // red channel's prefix + "A"), so the output can replace the input in a comp.
   std::vector<std::string> outputChannels;
+  // Frames read ahead and written behind on worker threads while the GL thread resolves (0: all
+  // on the calling thread, one step after another). Output is identical either way.
+  int ioThreads = 2;
 };
 
 // The output's 4 color channel names for `job` (see SequenceJob::outputChannels).
