@@ -15,8 +15,10 @@ namespace {
 namespace fs = std::filesystem;
 
 // A small user config: linear reference, a gamma working space, a clamped (non-invertible) one.
+// One file per test: CTest runs the tests of this file in parallel processes.
 std::string writeUserConfig() {
-  const fs::path dir = fs::path(TAA_TEST_TMPDIR) / "user_config";
+  const fs::path dir = fs::path(TAA_TEST_TMPDIR) /
+                       ::testing::UnitTest::GetInstance()->current_test_info()->name();
   fs::create_directories(dir);
   const fs::path path = dir / "config.ocio";
   std::ofstream(path) << R"(ocio_profile_version: 2
