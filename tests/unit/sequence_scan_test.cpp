@@ -13,7 +13,8 @@ namespace fs = std::filesystem;
 class SequenceScan : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::path(TAA_TEST_TMPDIR) / "scan";
+    // One folder per test: CTest runs the tests of this file in parallel processes.
+    dir_ = fs::path(TAA_TEST_TMPDIR) / ::testing::UnitTest::GetInstance()->current_test_info()->name();
     fs::remove_all(dir_);
     fs::create_directories(dir_);
   }
