@@ -14,7 +14,8 @@ class SequenceScan : public ::testing::Test {
  protected:
   void SetUp() override {
     // One folder per test: CTest runs the tests of this file in parallel processes.
-    dir_ = fs::path(TAA_TEST_TMPDIR) / ::testing::UnitTest::GetInstance()->current_test_info()->name();
+    const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
+    dir_ = fs::path(TAA_TEST_TMPDIR) / test->name();
     fs::remove_all(dir_);
     fs::create_directories(dir_);
   }
