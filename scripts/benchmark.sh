@@ -41,6 +41,7 @@ for compression in zip piz none; do
       -o "$in/motion.#.exr"
   fi
   rm -rf "$work/out" "$work/io"
+  mkdir -p "$work/io"  # oiiotool does not create output folders
   read -r taa_s taa_kib < <(measure "$taatool" -q "$in/beauty.####.exr" --depth "$in/depth.####.exr" \
     --motion "$in/motion.####.exr" --frames "1-$frames" --compression "$compression" \
     -o "$work/out/r.####.exr")
