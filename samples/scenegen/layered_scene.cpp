@@ -153,16 +153,7 @@ SceneFrame LayeredScene::render(int frame, const RenderSettings& settings) const
   const int n = settings.truthSamplesPerAxis;
   if (n < 1) throw Error("truth samples per axis must be at least 1", {"", frame, ""});
   const int w = width(), h = height();
-  SceneFrame out;
-  out.frame = frame;
-  out.jitter = frameJitter(frame, settings.jitter);
-  out.color = Image(w, h, 4);
-  out.depth = Image(w, h, 1);
-  out.motion = Image(w, h, 2);
-  out.nextMotion = Image(w, h, 2);
-  out.truth = Image(w, h, 4);
-  out.flow = Image(w, h, 2);
-  out.disocclusion = Image(w, h, 1);
+  SceneFrame out = blankFrame(frame, w, h, settings, true);
   const glm::dvec2 jitter(out.jitter);
   const Placement placement = place(frame, false);
   const Placement previous = place(frame - 1, false);

@@ -6,11 +6,13 @@
 #include <cstdlib>
 #include <iostream>
 #include <stdexcept>
+#include <optional>
 #include <string>
 
 #include "scenegen/exr_output.h"
 #include "scenegen/scene_library.h"
 #include "taa/error.h"
+#include "util/number_text.h"
 
 namespace {
 
@@ -37,15 +39,9 @@ const char* kUsage =
 [[noreturn]] void fail(const std::string& what) { throw std::invalid_argument(what); }
 
 int parseInt(const std::string& text, const std::string& what) {
-  std::size_t used = 0;
-  int value = 0;
-  try {
-    value = std::stoi(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used == 0 || used != text.size()) fail("bad " + what + " '" + text + "'");
-  return value;
+  const std::optional<int> value = taa::parseIntText(text);
+  if (!value) fail("bad " + what + " '" + text + "'");
+  return *value;
 }
 
 // "A-B" or "A"; A may be negative ("-5--1" is frames -5 to -1).

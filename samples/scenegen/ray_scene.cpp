@@ -231,15 +231,7 @@ Image RayScene::truthRegion(int frame, const RenderSettings& settings, int x0, i
 
 SceneFrame RayScene::render(int frame, const RenderSettings& settings) const {
   const int w = width(), h = height();
-  SceneFrame out;
-  out.frame = frame;
-  out.jitter = frameJitter(frame, settings.jitter);
-  out.color = Image(w, h, 4);
-  out.depth = Image(w, h, 1);
-  out.motion = Image(w, h, 2);
-  out.nextMotion = Image(w, h, 2);
-  out.flow = Image(w, h, 2);
-  out.disocclusion = Image(w, h, 1);
+  SceneFrame out = blankFrame(frame, w, h, settings, false);
   out.shot = shot(frame);
   const FrameState now = state(frame), previous = state(frame - 1), next = state(frame + 1);
   out.hasCamera = true;

@@ -56,6 +56,23 @@ struct SceneFrame {
   int shot = 0;            // shot number: changes at a hard cut
 };
 
+// A frame with every image allocated at width x height (zeros) and the frame's jitter set;
+// truth is left empty for scenes that compute it separately.
+inline SceneFrame blankFrame(int frame, int width, int height, const RenderSettings& settings,
+                             bool withTruth) {
+  SceneFrame out;
+  out.frame = frame;
+  out.jitter = frameJitter(frame, settings.jitter);
+  out.color = Image(width, height, 4);
+  out.depth = Image(width, height, 1);
+  out.motion = Image(width, height, 2);
+  out.nextMotion = Image(width, height, 2);
+  if (withTruth) out.truth = Image(width, height, 4);
+  out.flow = Image(width, height, 2);
+  out.disocclusion = Image(width, height, 1);
+  return out;
+}
+
 // A scene of fixed raster size. Rendering a frame is independent of any other frame, so frames
 // can be rendered in any order (farm chunks, tests picking single frames).
 class Scene {

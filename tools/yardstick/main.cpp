@@ -8,6 +8,7 @@
 #include <fstream>
 #include <iostream>
 #include <sstream>
+#include <optional>
 #include <string>
 #include <thread>
 #include <vector>
@@ -23,6 +24,7 @@
 #include "yardstick/report.h"
 #include "yardstick/scene_cache.h"
 #include "yardstick/sequence_score.h"
+#include "util/number_text.h"
 
 namespace {
 
@@ -73,15 +75,9 @@ std::vector<std::string> splitList(const std::string& text) {
 }
 
 int parseInt(const std::string& text, const std::string& what) {
-  std::size_t used = 0;
-  int value = 0;
-  try {
-    value = std::stoi(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used == 0 || used != text.size()) fail("bad " + what + " '" + text + "'");
-  return value;
+  const std::optional<int> value = taa::parseIntText(text);
+  if (!value) fail("bad " + what + " '" + text + "'");
+  return *value;
 }
 
 Arguments parseArguments(int argc, char** argv) {
