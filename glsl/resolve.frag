@@ -149,21 +149,11 @@ vec2 pixelMotion(ivec2 source, vec2 position, float depth) {
   return vectors;
 }
 
-// The previous frame's closest depth in the 3x3 texels around `position`. Generous on purpose:
-// a sub-pixel wire hits pixel centres only in some frames, and a tight footprint would call its
-// history disoccluded whenever this frame's centre sample hit it and the last one's did not.
-float previousDepthAround(vec2 position) {
-  ivec2 maxPixel = textureSize(uPreviousDepth, 0) - 1;
-  ivec2 centre = ivec2(floor(position));
-  float closest = 1.0 / 0.0;
-  for (int dy = -1; dy <= 1; ++dy) {
-    for (int dx = -1; dx <= 1; ++dx) {
-      ivec2 q = clamp(centre + ivec2(dx, dy), ivec2(0), maxPixel);
-      closest = min(closest, texelFetch(uPreviousDepth, q, 0).r);
-    }
-  }
-  return closest;
-}
+// What the previous frame's depth says around the reprojected position.
+struct PreviousDepth {
+  bool hidden;     // the surface seen now was behind something there: disocclusion
+  bool confirmed;  // the same surface was there (thin-feature hold)
+};
 
 // Disocclusion: the surface seen now was hidden in the previous frame, i.e. something nearer
 // than it stood there. One-sided on purpose: a previous depth *farther* than expected means a
@@ -178,6 +168,33 @@ bool wasHidden(float expected, float found, float tolerance) {
 bool depthAgrees(float expected, float found, float tolerance) {
   if (isinf(expected) || isinf(found)) return isinf(expected) && isinf(found);
   return abs(found - expected) <= tolerance * expected;
+}
+
+PreviousDepth comparePreviousDepth(vec2 position, float expected, float tolerance) {
+  ivec2 maxPixel = textureSize(uPreviousDepth, 0) - 1;
+  ivec2 centre = clamp(ivec2(floor(position)), ivec2(0), maxPixel);
+  float closest = 1.0 / 0.0, farthest = 0.0;
+  for (int dy = -1; dy <= 1; ++dy) {
+    for (int dx = -1; dx <= 1; ++dx) {
+      ivec2 q = clamp(centre + ivec2(dx, dy), ivec2(0), maxPixel);
+      float d = texelFetch(uPreviousDepth, q, 0).r;
+      closest = min(closest, d);
+      farthest = max(farthest, d);
+    }
+  }
+  float nearest = texelFetch(uPreviousDepth, centre, 0).r;
+  PreviousDepth result;
+  // Hidden only if every texel around was nearer: a sub-pixel wire seen by one of last frame's
+  // centre samples must not reject the backdrop beside it (docs/TUNING.md: the 3x3 closest depth
+  // rejected those pixels every few frames, which made the wires scene flicker).
+  result.hidden = wasHidden(expected, farthest, tolerance);
+  // Confirmed by the texel history mostly comes from, or, for a thin foreground feature seen
+  // now, by the nearest surface around. Not by any texel: a background pixel just revealed
+  // beside a moving object would then be held, ghost and all.
+  float confirmTolerance = 0.25 * tolerance;
+  result.confirmed = depthAgrees(expected, nearest, confirmTolerance) ||
+                     depthAgrees(expected, closest, confirmTolerance);
+  return result;
 }
 
 void writeResult(vec4 working, float samples, float historyWeight, float reason, vec2 velocity) {
@@ -241,12 +258,12 @@ void main() {
   bool depthConfirmed = false;
   if (uHasDepth && uHasPreviousDepth && uDepthTolerance > 0.0) {
     float expected = uHasCamera ? previousCameraDepth(position, depth) : depth;
-    float found = previousDepthAround(previousPosition);
-    if (wasHidden(expected, found, uDepthTolerance)) {
+    PreviousDepth previous = comparePreviousDepth(previousPosition, expected, uDepthTolerance);
+    if (previous.hidden) {
       writeResult(filtered, 1.0, 0.0, kDisoccluded, motion);
       return;
     }
-    depthConfirmed = depthAgrees(expected, found, 0.25 * uDepthTolerance);
+    depthConfirmed = previous.confirmed;
   }
 
 #if HISTORY_FILTER == 1

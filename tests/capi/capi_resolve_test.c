@@ -195,7 +195,9 @@ static void test_explicit_jitter(const float* expected) {
   CHECK(taa_node_push_frame(node, &frame) == TAA_OK, "%s", taa_node_last_error(node));
   CHECK(taa_node_read_output(node, &ob) == TAA_OK, "%s", taa_node_last_error(node));
   const float same = max_abs_diff(out, expected, frame_values);
-  CHECK(same <= 1e-6f, "explicit Halton jitter differs by %g", same);
+  /* 1/3 - 0.5 here and the library's Halton may differ in the last bit; the reconstruction
+   * filter's slope turns that into a few 1e-6. */
+  CHECK(same <= 1e-5f, "explicit Halton jitter differs by %g", same);
 
   CHECK(taa_node_reset_history(node) == TAA_OK, "%s", taa_node_last_error(node));
   frame.jitter[0] = 0.4f;

@@ -302,7 +302,9 @@ TEST_F(ConventionsTest, OutputKeepsNamesTypeMetadataAndPassThroughChannels) {
   EXPECT_EQ(out.spec.get_string_attribute("taa:scene"), "moving_object");  // metadata kept
   EXPECT_NE(out.spec.get_string_attribute("taa:version"), "");
   const std::string options = out.spec.get_string_attribute("taa:options");
-  EXPECT_NE(options.find("blend=0.1"), std::string::npos) << options;
+  EXPECT_NE(options.find("blend=" + resolveOptionValue(ResolveOptions{}, "blend")),
+            std::string::npos)
+      << options;
   EXPECT_NE(options.find("rectify=" + resolveOptionValue(ResolveOptions{}, "rectify")),
             std::string::npos)
       << options;

@@ -65,9 +65,11 @@ void expectEqualsFilteredCurrent(const Image& output, const scenes::SceneFrame& 
   }
 }
 
-// Default options without the tonemap bracket, so the output is the filter's plain arithmetic.
+// Default options with the Blackman-Harris fit (the filter above) and without the tonemap
+// bracket, so the output is the filter's plain arithmetic.
 ResolveOptions withoutBracket() {
   ResolveOptions options;
+  options.reconstruction = Reconstruction::BlackmanHarris;
   options.color.bracket = "none";
   return options;
 }

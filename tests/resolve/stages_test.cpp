@@ -33,10 +33,13 @@ Image constant(int channels, float v) {
   return filled(channels, [&](int, int) { return std::vector<float>(channels, v); });
 }
 
-// Options that make single stages observable: no bracket, centre reconstruction, no jitter.
+// Options that make single stages observable: no bracket, centre reconstruction, no jitter, a
+// fixed blend of 0.1 whatever the speed.
 ResolveOptions plainOptions() {
   ResolveOptions o;
   o.reconstruction = Reconstruction::Centre;
+  o.blend = 0.1f;
+  o.velocityBlend = 0.0f;
   o.jitter.source = JitterSource::None;
   o.sampleCount = false;
   o.color.bracket = "none";
@@ -78,6 +81,22 @@ TEST_F(StagesTest, DisoccludedRegionResetsToTheCurrentFrame) {
   EXPECT_NEAR(out.at(4, 6)[0], 0.1f, 1e-6f); // kept: blended with weight 0.1
   EXPECT_EQ(resolver.lastDebug().at(18, 6)[1], float(Rejection::Disoccluded));
   EXPECT_EQ(resolver.lastDebug().at(4, 6)[1], float(Rejection::Kept));
+}
+
+TEST_F(StagesTest, ThinOccluderInThePreviousFrameDoesNotRejectTheBackdrop) {
+  // Last frame's centre samples hit a one-pixel wire at x = 8 that this frame's samples miss: the
+  // backdrop around it was not hidden (only the wire's own footprint is nearer), so history stays.
+  ResolveOptions o = plainOptions();
+  o.rectify = Rectify::None;
+  Resolver resolver(*context_, o);
+  resolver.setDebugOutput(true);
+  const Image wire = filled(1, [](int x, int) { return std::vector<float>{x == 8 ? 1.f : 5.f}; });
+  run(resolver, grey(0.0f), &wire);
+  const Image backdrop = constant(1, 5.0f);
+  run(resolver, grey(1.0f), &backdrop);
+  for (int x = 6; x <= 10; ++x) {
+    EXPECT_EQ(resolver.lastDebug().at(x, 6)[1], float(Rejection::Kept)) << "x " << x;
+  }
 }
 
 TEST_F(StagesTest, ColourFarOutsideTheBoxIsClippedToItsSurface) {

@@ -57,7 +57,7 @@ struct ResolveOptions {
   // [program] Filter reconstructing the current frame at pixel centres from the 3x3 jittered
   // samples: Centre (the pixel's own sample, no filter), BlackmanHarris (soft, no ringing),
   // Lanczos2 (sharper, small negative lobes).
-  Reconstruction reconstruction = Reconstruction::BlackmanHarris;
+  Reconstruction reconstruction = Reconstruction::Lanczos2;
   // How each frame's samples were offset from pixel centres.
   JitterOptions jitter;
 
@@ -102,17 +102,17 @@ struct ResolveOptions {
   // shading changes (moving shadows, reflections) on static geometry.
   float thinFeatureHold = 1.0f;
   // Pixels per frame at which the thin-feature hold has faded out completely. > 0.
-  float thinFeatureHoldSpeed = 2.0f;
+  float thinFeatureHoldSpeed = 8.0f;
 
   // --- blend
   // Weight of the current frame in the exponential blend, in (0, 1]. Smaller accumulates more
   // frames (smoother, more ghosting risk); 1 turns accumulation off.
-  float blend = 0.1f;
+  float blend = 0.04f;
   // Weight of the current frame at high speed, in [0, 1]; values <= blend turn it off. Moving
   // pixels get more of the current frame, since resampled history is softer.
-  float velocityBlend = 0.0f;
+  float velocityBlend = 0.25f;
   // Pixels per frame at which velocityBlend is reached. > 0.
-  float velocityScale = 8.0f;
+  float velocityScale = 1.0f;
   // 0..1: where history and current luma agree, lower the current weight by this fraction
   // (steadier); where they differ, keep blend (responsive).
   float antiFlicker = 0.0f;
