@@ -4,71 +4,86 @@
 #      depth, in ZIP, PIZ and uncompressed variants;
 #   2. taatool (default resolve and bracket, half ZIP/PIZ/none output as the input) on each,
 #      and oiiotool doing only the I/O of the same job in one process: read the three AOVs,
-#      write RGBA;
+#      write RGBA. Both get the same --compression name; a bare "zip" is level 1 in taatool
+#      (io/exr_writer.h) and OpenEXR's level 4 in oiiotool;
 #   3. peak RSS of taatool at 4K for 24 and 96 frames (the 96 reuse 8 rendered frames by links).
-# Uses Debian's /usr/bin/time and oiiotool (openimageio-tools). Environment: SIZE, FRAMES.
+# Uses Debian's /usr/bin/time and oiiotool (openimageio-tools). Environment: SIZE, FRAMES,
+# COMPRESSIONS (default "zip piz none"), PARTS ("speed memory" by default; either alone).
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${TAA_BUILD_DIR:-$root/build}"
 size="${SIZE:-1920x1080}"
 frames="${FRAMES:-24}"
+compressions="${COMPRESSIONS:-zip piz none}"
+parts="${PARTS:-speed memory}"
 work="$build/benchmark"
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
 cmake --build "$build" -j"$(nproc)" --target taatool taa-scenegen >/dev/null
 taatool="$build/bin/taatool"
 scenegen="$build/bin/taa-scenegen"
 
-# Seconds and peak RSS (KiB) of a command, as "seconds kib".
-measure() { /usr/bin/time -f "%e %M" -o "$work/time.txt" "$@" >/dev/null; cat "$work/time.txt"; }
+# Wall seconds, peak RSS (KiB) and CPU seconds (user + system, all threads) of a command, as
+# "seconds kib cpu". CPU time is the steadier figure on a shared machine: on 2 cores the best
+# wall time of a fully overlapped pipeline is CPU / 2.
+measure() {
+  /usr/bin/time -f "%e %M %U %S" -o "$work/time.txt" "$@" >/dev/null
+  awk '{ printf "%s %s %.2f\n", $1, $2, $3 + $4 }' "$work/time.txt"
+}
 
-source="$work/source-$size"
-if [ ! -f "$source/beauty.$(printf %04d "$frames").exr" ]; then
-  "$scenegen" --scene moving_object --frames "1-$frames" --size "$size" --layout separate \
-    --truth-samples 1 --out "$source" >/dev/null
-fi
-
-echo "taa benchmark: $size, $frames frames, $(nproc) cores, $("$taatool" --info | grep 'GL renderer' | sed 's/ *GL renderer: *//')"
-printf "%-6s %12s %8s %14s %18s\n" compression "taatool s" "fps" "oiiotool I/O s" "taatool/oiiotool"
-for compression in zip piz none; do
-  in="$work/$size-$compression"
-  if [ ! -f "$in/motion.$(printf %04d "$frames").exr" ]; then
-    mkdir -p "$in"
-    oiiotool --frames "1-$frames" "$source/beauty.#.exr" -d half --compression "$compression" \
-      -o "$in/beauty.#.exr"
-    oiiotool --frames "1-$frames" "$source/depth.#.exr" -d float --compression "$compression" \
-      -o "$in/depth.#.exr"
-    oiiotool --frames "1-$frames" "$source/motion.#.exr" -d half --compression "$compression" \
-      -o "$in/motion.#.exr"
+if [[ " $parts " == *" speed "* ]]; then
+  source="$work/source-$size"
+  if [ ! -f "$source/beauty.$(printf %04d "$frames").exr" ]; then
+    "$scenegen" --scene moving_object --frames "1-$frames" --size "$size" --layout separate \
+      --truth-samples 1 --out "$source" >/dev/null
   fi
-  rm -rf "$work/out" "$work/io"
-  mkdir -p "$work/io"  # oiiotool does not create output folders
-  read -r taa_s taa_kib < <(measure "$taatool" -q "$in/beauty.####.exr" --depth "$in/depth.####.exr" \
-    --motion "$in/motion.####.exr" --frames "1-$frames" --compression "$compression" \
-    -o "$work/out/r.####.exr")
-  read -r io_s io_kib < <(measure oiiotool --frames "1-$frames" "$in/beauty.#.exr" \
-    "$in/depth.#.exr" "$in/motion.#.exr" --chappend --chappend --ch R,G,B,A -d half \
-    --compression "$compression" -o "$work/io/o.#.exr")
-  awk -v c="$compression" -v t="$taa_s" -v n="$frames" -v o="$io_s" \
-    'BEGIN { printf "%-11s %12.2f %8.2f %14.2f %18.2f\n", c, t, n / t, o, t / o }'
-done
 
-# Peak memory must not grow with the sequence: 8 rendered 4K frames, linked to make 24 and 96.
-uhd="$work/source-3840x2160"
-if [ ! -f "$uhd/beauty.0008.exr" ]; then
-  "$scenegen" --scene moving_object --frames 1-8 --size 3840x2160 --layout separate \
-    --truth-samples 1 --out "$uhd" >/dev/null
-fi
-for count in 24 96; do
-  linked="$work/uhd-$count"
-  rm -rf "$linked" "$work/out"
-  mkdir -p "$linked"
-  for f in $(seq 1 "$count"); do
-    for aov in beauty depth motion; do
-      ln -s "$uhd/$aov.$(printf %04d $(( (f - 1) % 8 + 1 ))).exr" "$linked/$aov.$(printf %04d "$f").exr"
-    done
+  echo "taa benchmark: $size, $frames frames, $(nproc) cores, $("$taatool" --info | grep 'GL renderer' | sed 's/ *GL renderer: *//')"
+  printf "%-11s %10s %7s %9s %15s %13s %17s\n" compression "taatool s" fps "(CPU s)" \
+    "oiiotool I/O s" "(CPU s)" "taatool/oiiotool"
+  for compression in $compressions; do
+    in="$work/$size-$compression"
+    if [ ! -f "$in/motion.$(printf %04d "$frames").exr" ]; then
+      mkdir -p "$in"
+      oiiotool --frames "1-$frames" "$source/beauty.#.exr" -d half --compression "$compression" \
+        -o "$in/beauty.#.exr"
+      oiiotool --frames "1-$frames" "$source/depth.#.exr" -d float --compression "$compression" \
+        -o "$in/depth.#.exr"
+      oiiotool --frames "1-$frames" "$source/motion.#.exr" -d half --compression "$compression" \
+        -o "$in/motion.#.exr"
+    fi
+    rm -rf "$work/out" "$work/io"
+    mkdir -p "$work/io"  # oiiotool does not create output folders
+    read -r taa_s taa_kib taa_cpu < <(measure "$taatool" -q "$in/beauty.####.exr" --depth "$in/depth.####.exr" \
+      --motion "$in/motion.####.exr" --frames "1-$frames" --compression "$compression" \
+      -o "$work/out/r.####.exr")
+    read -r io_s io_kib io_cpu < <(measure oiiotool --frames "1-$frames" "$in/beauty.#.exr" \
+      "$in/depth.#.exr" "$in/motion.#.exr" --chappend --chappend --ch R,G,B,A -d half \
+      --compression "$compression" -o "$work/io/o.#.exr")
+    awk -v c="$compression" -v t="$taa_s" -v tc="$taa_cpu" -v n="$frames" -v o="$io_s" \
+      -v oc="$io_cpu" 'BEGIN { printf "%-11s %10.2f %7.2f %9.2f %15.2f %13.2f %17.2f\n", \
+      c, t, n / t, tc, o, oc, t / o }'
   done
-  read -r s kib < <(measure "$taatool" -q "$linked/beauty.####.exr" --depth "$linked/depth.####.exr" \
-    --motion "$linked/motion.####.exr" --frames "1-$count" -o "$work/out/r.####.exr")
-  echo "4K, $count frames: $s s, peak RSS $((kib / 1024)) MiB"
-done
+fi
+
+if [[ " $parts " == *" memory "* ]]; then
+  # Peak memory must not grow with the sequence: 8 rendered 4K frames, linked to make 24 and 96.
+  uhd="$work/source-3840x2160"
+  if [ ! -f "$uhd/beauty.0008.exr" ]; then
+    "$scenegen" --scene moving_object --frames 1-8 --size 3840x2160 --layout separate \
+      --truth-samples 1 --out "$uhd" >/dev/null
+  fi
+  for count in 24 96; do
+    linked="$work/uhd-$count"
+    rm -rf "$linked" "$work/out"
+    mkdir -p "$linked"
+    for f in $(seq 1 "$count"); do
+      for aov in beauty depth motion; do
+        ln -s "$uhd/$aov.$(printf %04d $(( (f - 1) % 8 + 1 ))).exr" "$linked/$aov.$(printf %04d "$f").exr"
+      done
+    done
+    read -r s kib cpu < <(measure "$taatool" -q "$linked/beauty.####.exr" --depth "$linked/depth.####.exr" \
+      --motion "$linked/motion.####.exr" --frames "1-$count" -o "$work/out/r.####.exr")
+    echo "4K, $count frames: $s s ($cpu s CPU), peak RSS $((kib / 1024)) MiB"
+  done
+fi
 rm -rf "$work/out" "$work/io"

@@ -248,18 +248,25 @@ TEST_F(TaatoolTest, BracketsListedAndChosen) {
 
 TEST_F(TaatoolTest, PipelinedAndSerialRunsAreBitIdentical) {
   const fs::path in = generate("in", scenes::OutputLayout::Separate, 1, 8);
-  for (const char* threads : {"0", "3"}) {
-    auto args = separateArgs(in, dir_ / (std::string("t") + threads) / "r.####.exr");
-    args.insert(args.end(), {"--threads", threads, "-d", "float"});
-    const RunResult r = run(args);
-    ASSERT_EQ(r.exitCode, 0) << r.err;
-  }
-  for (int f = 1; f <= 8; ++f) {
-    char name[32];
-    std::snprintf(name, sizeof name, "r.%04d.exr", f);
-    const auto serial = readPixels(dir_ / "t0" / name), pipelined = readPixels(dir_ / "t3" / name);
-    ASSERT_FALSE(serial.empty());
-    EXPECT_EQ(serial, pipelined) << name;
+  // Half: the native path (half read, uploaded and read back as half); float: widened output.
+  for (const std::string type : {"half", "float"}) {
+    SCOPED_TRACE(type);
+    for (const std::string threads : {"0", "3"}) {
+      auto args = separateArgs(in, dir_ / (type + "-t" + threads) / "r.####.exr");
+      args.insert(args.end(), {"--threads", threads, "-d", type});
+      const RunResult r = run(args);
+      ASSERT_EQ(r.exitCode, 0) << r.err;
+    }
+    for (int f = 1; f <= 8; ++f) {
+      char name[32];
+      std::snprintf(name, sizeof name, "r.%04d.exr", f);
+      OIIO::ImageSpec spec;
+      const auto serial = readPixels(dir_ / (type + "-t0") / name, &spec);
+      const auto pipelined = readPixels(dir_ / (type + "-t3") / name);
+      ASSERT_FALSE(serial.empty());
+      EXPECT_EQ(spec.format, type == "half" ? OIIO::TypeHalf : OIIO::TypeFloat);
+      EXPECT_EQ(serial, pipelined) << name;
+    }
   }
   expectError(run({"--threads", "-1"}), {"--threads"});
 }

@@ -1,5 +1,6 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <OpenImageIO/imageio.h>
 
 #include <string>
 #include <vector>
@@ -8,6 +9,7 @@
 #include "gl/objects.h"
 #include "gl_test_support.h"
 #include "taa/error.h"
+#include "util/image.h"
 
 namespace taa::gl {
 namespace {
@@ -92,6 +94,82 @@ TEST_P(TextureTest, UploadedTexelsAreSampledAndReadBackExactly) {
       EXPECT_EQ(mismatches, 0);
     }
   }
+}
+
+// half -> float through OIIO (libImath's tables are not linked into the tests).
+float widen(Imath::half h) {
+  float f = 0.0f;
+  OIIO::convert_pixel_values(OIIO::TypeHalf, &h, OIIO::TypeFloat, &f, 1);
+  return f;
+}
+
+// Every finite half value, as RGBA halves (4 per texel), in a 128 x 128 texture.
+std::vector<Imath::half> allFiniteHalves() {
+  std::vector<Imath::half> halves;
+  for (unsigned bits = 0; bits < 0x10000u; ++bits) {
+    Imath::half h;
+    h.setBits(static_cast<uint16_t>(bits));
+    halves.push_back(h.isFinite() ? h : Imath::half(0.0f));
+  }
+  return halves;
+}
+
+TEST_P(TextureTest, HalfUploadIntoRgba16fSamplesExactly) {
+  const int width = 128, height = 128;
+  const std::vector<Imath::half> halves = allFiniteHalves();
+  HalfImage image(width, height, 4);
+  image.pixels = halves;
+  const Image widened = TypedImage(image).toFloat();
+  Texture texture(gl(), width, height, GL_RGBA16F);
+  texture.upload(halves.data(), 4, GL_HALF_FLOAT);
+  const ShaderSource fetch = test::fragmentShader(
+      "fetch.frag",
+      "uniform sampler2D uTexture;\n"
+      "void main() { outColor = texelFetch(uTexture, ivec2(gl_FragCoord.xy), 0); }\n");
+  const std::vector<float> pixels =
+      test::renderPass(gl(), fetch, width, height, [&](const Program& program) {
+        texture.bind(0);
+        program.set("uTexture", 0);
+      });
+  int mismatches = 0;
+  for (std::size_t i = 0; i < pixels.size(); ++i) {
+    // Subnormal halves are normal floats: none may be flushed.
+    if (pixels[i] != widened.pixels[i] && ++mismatches <= 3) {
+      ADD_FAILURE() << "half bits " << halves[i].bits() << ": got " << pixels[i];
+    }
+  }
+  EXPECT_EQ(mismatches, 0);
+}
+
+// Reading a float attachment back as half must round as Imath does (to nearest, ties to even,
+// beyond 65504 to infinity): the resolver reads half output this way, and files written from
+// float used Imath. (Rendering into an RGBA16F target would not do: llvmpipe truncates there.)
+TEST_P(TextureTest, FloatReadBackAsHalfRoundsLikeImath) {
+  const int width = 256, height = 64;
+  std::vector<float> values;
+  for (unsigned bits = 0; values.size() < std::size_t(width) * height * 4; bits += 3) {
+    Imath::half low, high;
+    low.setBits(static_cast<uint16_t>(bits & 0x7bfe));
+    high.setBits(static_cast<uint16_t>((bits & 0x7bfe) + 1));
+    const float a = widen(low), b = widen(high);
+    values.push_back(a + 0.5f * (b - a));    // a tie
+    values.push_back(-(a + 0.25f * (b - a)));  // nearer the lower magnitude
+    values.push_back(a + 0.75f * (b - a));   // nearer the upper
+    values.push_back(65504.0f + float(bits % 64) * 16.0f);  // the top, and past it
+  }
+  Texture texture(gl(), width, height, GL_RGBA32F);
+  texture.upload(values.data(), 4);
+  const Framebuffer framebuffer(gl(), texture);
+  std::vector<Imath::half> halves(values.size());
+  framebuffer.readRGBA(halves.data(), GL_HALF_FLOAT);
+  int mismatches = 0;
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    if (halves[i].bits() != Imath::half(values[i]).bits() && ++mismatches <= 3) {
+      ADD_FAILURE() << values[i] << ": got bits " << halves[i].bits() << ", Imath "
+                    << Imath::half(values[i]).bits();
+    }
+  }
+  EXPECT_EQ(mismatches, 0);
 }
 
 TEST_P(TextureTest, LinearFilteringBlendsNeighbours) {

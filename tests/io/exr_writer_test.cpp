@@ -2,9 +2,12 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdint>
 #include <filesystem>
+#include <fstream>
 #include <functional>
+#include <iterator>
 
 #include "taa/error.h"
 #include "test_files.h"
@@ -171,6 +174,58 @@ TEST(WriteExrAtomic, CompressionComesFromTheOptions) {
     EXPECT_EQ(spec.get_string_attribute("compression").substr(0, compression.size()),
               compression);
   }
+}
+
+std::string fileBytes(const std::string& path) {
+  std::ifstream file(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>());
+}
+
+// Half samples into a half file go to the encoder untouched; with extra channels they are
+// widened to float first, which is exact, so the file holds the same halves.
+TEST(WriteExrAtomic, HalfImageIsWrittenBitForBit) {
+  const std::string folder = scratchFolder();
+  HalfImage rgba(5, 3, 4);
+  for (std::size_t i = 0; i < rgba.pixels.size(); ++i) {
+    rgba.pixels[i] = Imath::half(0.1f + 1.37f * float(i));
+  }
+  ExtraChannels extra;
+  extra.names = {"debug.x"};
+  extra.image = Image(5, 3, 1);
+  for (const bool withExtra : {false, true}) {
+    SCOPED_TRACE(withExtra ? "with an extra channel" : "RGBA only");
+    const std::string path = folder + (withExtra ? "/extra.exr" : "/rgba.exr");
+    writeExrAtomic(path, TypedImage(rgba), cyclesLikeTemplate(), {PixelType::Half, "zip"},
+                   withExtra ? extra : ExtraChannels{});
+    auto input = OIIO::ImageInput::open(path);
+    ASSERT_TRUE(input);
+    EXPECT_EQ(input->spec().channelformat(0), OIIO::TypeHalf);
+    std::vector<Imath::half> read(rgba.pixels.size());
+    ASSERT_TRUE(input->read_image(0, 0, 0, 4, OIIO::TypeHalf, read.data()));
+    for (std::size_t i = 0; i < read.size(); ++i) {
+      EXPECT_EQ(read[i].bits(), rgba.pixels[i].bits()) << i;
+    }
+  }
+  // A float output of half samples widens them exactly.
+  const std::string floatPath = folder + "/float.exr";
+  writeExrAtomic(floatPath, TypedImage(rgba), cyclesLikeTemplate(), {PixelType::Float, "zip"});
+  OIIO::ImageSpec spec;
+  EXPECT_EQ(readImage(floatPath, spec), TypedImage(rgba).toFloat().pixels);
+  EXPECT_EQ(spec.format, OIIO::TypeFloat);
+}
+
+// A bare zip is zip at kDefaultZipLevel, a given level is honoured.
+TEST(WriteExrAtomic, BareZipMeansTheDefaultLevel) {
+  const std::string folder = scratchFolder();
+  const Image rgba = makeRgba(64, 48, [](int p, int c) { return std::sin(0.37f * p + c); });
+  const OIIO::ImageSpec none;
+  for (const std::string compression : {"zip", "zip:1", "zip:9", "zips", "zips:1"}) {
+    writeExrAtomic(folder + "/" + compression + ".exr", rgba, none, {PixelType::Half, compression});
+  }
+  ASSERT_EQ(kDefaultZipLevel, 1);
+  EXPECT_EQ(fileBytes(folder + "/zip.exr"), fileBytes(folder + "/zip:1.exr"));
+  EXPECT_EQ(fileBytes(folder + "/zips.exr"), fileBytes(folder + "/zips:1.exr"));
+  EXPECT_NE(fileBytes(folder + "/zip.exr"), fileBytes(folder + "/zip:9.exr"));
 }
 
 TEST(WriteExrAtomic, WithoutTemplatePixelsTheWindowIsTheImage) {

@@ -17,6 +17,8 @@ using taa::test::makeSpec;
 using taa::test::scratchFolder;
 using taa::test::writeImage;
 
+using Names = std::vector<std::string>;
+
 constexpr float kInf = std::numeric_limits<float>::infinity();
 constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
 
@@ -89,23 +91,24 @@ TEST(ReadFrame, CyclesMultiLayerFileConvertsToInternalConventions) {
   writeTestExr(folder + "/render.0007.exr", channels, value);
 
   const FrameData data = readFrame(cyclesLayout(folder + "/render.####.exr"), 7);
+  const Image color = data.color.toFloat();
 
   EXPECT_EQ(data.frame, 7);
   EXPECT_EQ(data.colorPath, folder + "/render.0007.exr");
   EXPECT_EQ(data.colorSpec.width, 4);
   EXPECT_EQ(data.colorSpec.height, 3);
   EXPECT_EQ(data.nonFiniteColorValues, 0);
-  ASSERT_EQ(data.color.channels, 4);
+  ASSERT_EQ(color.channels, 4);
   ASSERT_EQ(data.depth.channels, 1);
   ASSERT_EQ(data.motion.channels, 2);
   for (int p = 0; p < 12; ++p) {
     const int x = p % 4;
     const int y = p / 4;
     SCOPED_TRACE("pixel " + std::to_string(p));
-    EXPECT_EQ(data.color.at(x, y)[0], 1.0f + p);
-    EXPECT_EQ(data.color.at(x, y)[1], 2.0f + p);
-    EXPECT_EQ(data.color.at(x, y)[2], 3.0f + p);
-    EXPECT_EQ(data.color.at(x, y)[3], 0.25f);
+    EXPECT_EQ(color.at(x, y)[0], 1.0f + p);
+    EXPECT_EQ(color.at(x, y)[1], 2.0f + p);
+    EXPECT_EQ(color.at(x, y)[2], 3.0f + p);
+    EXPECT_EQ(color.at(x, y)[3], 0.25f);
     EXPECT_EQ(data.depth.at(x, y)[0], p == 0 ? kInf : 10.0f + p);
     // Cycles: (X, Y) = previous - current with y up, so internal motion is (X, -Y).
     EXPECT_EQ(data.motion.at(x, y)[0], 0.5f + p);
@@ -121,8 +124,9 @@ TEST(ReadFrame, ChannelsComeInTheRequestedOrderNotTheFileOrder) {
   AovLayout layout;
   layout.color = {folder + "/c.exr", {"gamma", "alpha", "delta"}};
   const FrameData data = readFrame(layout, 1);
+  const Image color = data.color.toFloat();
   for (int p = 0; p < 12; ++p) {
-    const float* rgba = data.color.at(p % 4, p / 4);
+    const float* rgba = color.at(p % 4, p / 4);
     EXPECT_EQ(rgba[0], float(20 + p));
     EXPECT_EQ(rgba[1], float(0 + p));
     EXPECT_EQ(rgba[2], float(30 + p));
@@ -137,11 +141,12 @@ TEST(ReadFrame, SeparateFilesPerAovWithEveryPlaceholderKind) {
   // A file whose vectors point to the next frame, y down, at half resolution.
   layout.motionConvention = {false, false, 2.0f};
   const FrameData data = readFrame(layout, 12);
+  const Image color = data.color.toFloat();
   for (int p = 0; p < 12; ++p) {
     const int x = p % 4;
     const int y = p / 4;
-    EXPECT_FLOAT_EQ(data.color.at(x, y)[0], p + 0.1f);
-    EXPECT_FLOAT_EQ(data.color.at(x, y)[3], p + 0.4f);
+    EXPECT_FLOAT_EQ(color.at(x, y)[0], p + 0.1f);
+    EXPECT_FLOAT_EQ(color.at(x, y)[3], p + 0.4f);
     EXPECT_EQ(data.depth.at(x, y)[0], float(p + 1));
     EXPECT_EQ(data.motion.at(x, y)[0], -2.0f * p);
     EXPECT_EQ(data.motion.at(x, y)[1], 2.0f * p);
@@ -166,10 +171,11 @@ TEST(ReadFrame, ThreeChannelColorGetsOpaqueAlpha) {
   AovLayout layout;
   layout.color = {folder + "/rgb.exr", {"R", "G", "B"}};
   const FrameData data = readFrame(layout, 1);
-  ASSERT_EQ(data.color.channels, 4);
+  const Image color = data.color.toFloat();
+  ASSERT_EQ(color.channels, 4);
   for (int p = 0; p < 12; ++p) {
-    EXPECT_EQ(data.color.pixels[p * 4 + 2], float(p + 2));
-    EXPECT_EQ(data.color.pixels[p * 4 + 3], 1.0f);
+    EXPECT_EQ(color.pixels[p * 4 + 2], float(p + 2));
+    EXPECT_EQ(color.pixels[p * 4 + 3], 1.0f);
   }
 }
 
@@ -199,13 +205,14 @@ TEST(ReadFrame, NonFiniteValuesAreScrubbedAndCounted) {
   layout.motion = AovSource{folder + "/mv.exr", {"x", "y"}};
   layout.motionConvention.yUp = true;
   const FrameData data = readFrame(layout, 3);
+  const Image color = data.color.toFloat();
 
   EXPECT_EQ(data.nonFiniteColorValues, 3);
-  EXPECT_EQ(data.color.pixels[0], 0.0f);
-  EXPECT_EQ(data.color.pixels[4 + 1], 0.0f);
-  EXPECT_EQ(data.color.pixels[8 + 3], 0.0f);
-  EXPECT_EQ(data.color.pixels[8 + 2], 0.5f);
-  for (float value : data.color.pixels) EXPECT_TRUE(std::isfinite(value));
+  EXPECT_EQ(color.pixels[0], 0.0f);
+  EXPECT_EQ(color.pixels[4 + 1], 0.0f);
+  EXPECT_EQ(color.pixels[8 + 3], 0.0f);
+  EXPECT_EQ(color.pixels[8 + 2], 0.5f);
+  for (float value : color.pixels) EXPECT_TRUE(std::isfinite(value));
 
   EXPECT_EQ(data.depth.pixels[0], kInf);
   EXPECT_EQ(data.depth.pixels[1], kInf);
@@ -219,6 +226,72 @@ TEST(ReadFrame, NonFiniteValuesAreScrubbedAndCounted) {
   EXPECT_EQ(data.motion.pixels[3], 0.0f);
   EXPECT_EQ(data.motion.pixels[4], 3.0f);
   EXPECT_EQ(data.motion.pixels[5], -3.0f);
+}
+
+TEST(ReadFrame, NonFiniteMaskMarksScrubbedPixelsOnly) {
+  const std::string folder = scratchFolder();
+  writeTestExr(folder + "/c.exr", {"R", "G", "B", "A"},
+               [](int p, int c) { return p == 5 && c == 2 ? kNaN : 0.5f; });
+  writeTestExr(folder + "/clean.exr", {"R", "G", "B", "A"}, [](int, int) { return 0.5f; });
+  AovLayout layout;
+  layout.color = {folder + "/c.exr", {"R", "G", "B", "A"}};
+  const FrameData data = readFrame(layout, 1);
+  ASSERT_EQ(data.nonFiniteMask.pixels.size(), 12u);
+  for (int p = 0; p < 12; ++p) EXPECT_EQ(data.nonFiniteMask.pixels[p], p == 5 ? 1.0f : 0.0f);
+  layout.color.pattern = folder + "/clean.exr";
+  EXPECT_TRUE(readFrame(layout, 1).nonFiniteMask.empty());  // none made when nothing scrubbed
+}
+
+// Half colour is read as half, bit for bit, and scrubbed and completed in half.
+TEST(ReadFrame, HalfColorStaysHalf) {
+  const std::string folder = scratchFolder();
+  const auto value = [](int p, int c) {
+    if (p == 0 && c == 0) return kNaN;
+    if (p == 1 && c == 2) return -kInf;
+    return 0.1f * float(p) + 0.01f * float(c);  // not exact in half: rounded once, on write
+  };
+  OIIO::ImageSpec spec = makeSpec(4, 3, {"R", "G", "B"});
+  spec.set_format(OIIO::TypeHalf);
+  std::vector<float> pixels;
+  for (int p = 0; p < 12; ++p) {
+    for (int c = 0; c < 3; ++c) pixels.push_back(value(p, c));
+  }
+  writeImage(folder + "/c.exr", spec, pixels);
+  // In file order (read straight into RGBA) and reversed (picked out of the read range).
+  for (const bool reversed : {false, true}) {
+    SCOPED_TRACE(reversed ? "B, G, R" : "R, G, B");
+    AovLayout layout;
+    layout.color = {folder + "/c.exr", reversed ? Names{"B", "G", "R"} : Names{"R", "G", "B"}};
+    const FrameData data = readFrame(layout, 1);
+    ASSERT_EQ(data.color.type(), SampleType::Half);
+    const HalfImage& color = *data.color.halves();
+    ASSERT_EQ(color.channels, 4);
+    EXPECT_EQ(data.nonFiniteColorValues, 2);
+    for (int p = 0; p < 12; ++p) {
+      SCOPED_TRACE("pixel " + std::to_string(p));
+      for (int c = 0; c < 3; ++c) {
+        const float stored = value(p, reversed ? 2 - c : c);
+        const Imath::half expected =
+            std::isfinite(stored) ? Imath::half(stored) : Imath::half(0.0f);
+        EXPECT_EQ(color.at(p % 4, p / 4)[c].bits(), expected.bits());
+      }
+      EXPECT_EQ(color.at(p % 4, p / 4)[3].bits(), Imath::half(1.0f).bits());
+    }
+  }
+}
+
+TEST(ReadFrame, ColorWithAnyFloatChannelIsFloat) {
+  const std::string folder = scratchFolder();
+  OIIO::ImageSpec spec = makeSpec(4, 3, {"R", "G", "B", "A"});
+  spec.channelformats = {OIIO::TypeHalf, OIIO::TypeHalf, OIIO::TypeHalf, OIIO::TypeFloat};
+  writeImage(folder + "/c.exr", spec, std::vector<float>(4 * 3 * 4, 0.25f));
+  AovLayout layout;
+  layout.color = {folder + "/c.exr", {"R", "G", "B", "A"}};
+  const FrameData data = readFrame(layout, 1);
+  ASSERT_EQ(data.color.type(), SampleType::Float);
+  for (float v : data.color.floats()->pixels) EXPECT_EQ(v, 0.25f);
+  layout.color.channels = {"R", "G", "B"};  // the float alpha unasked: half
+  EXPECT_EQ(readFrame(layout, 1).color.type(), SampleType::Half);
 }
 
 TEST(ReadFrame, KeepsTheColorHeader) {
@@ -240,8 +313,8 @@ TEST(ReadFrame, KeepsTheColorHeader) {
   EXPECT_EQ(data.colorSpec.full_width, 10);
   EXPECT_EQ(data.colorSpec.full_height, 12);
   EXPECT_EQ(data.colorSpec.get_string_attribute("taa:shot"), "sq010_sh020");
-  EXPECT_EQ(data.color.width, 4);
-  EXPECT_EQ(data.color.height, 3);
+  EXPECT_EQ(data.color.width(), 4);
+  EXPECT_EQ(data.color.height(), 3);
 }
 
 TEST(ReadFrameErrors, MissingColorFrameNamesPathAndFrame) {

@@ -74,7 +74,7 @@ TEST(MultiPart, PartsChosenByNameOrFoundByChannel) {
   layout.motion = AovSource{"", {"R", "G"}, "motion"};
   layout.depth = AovSource{"", {"Z"}, ""};  // found: the only part with Z
   const FrameData data = readFrame(layout, 1);
-  EXPECT_EQ(data.color.pixels[0], 0.0f);        // part 0, first value
+  EXPECT_EQ(data.color.toFloat().pixels[0], 0.0f);        // part 0, first value
   EXPECT_EQ(data.motion.pixels[0], 1000.0f);    // part 1
   EXPECT_EQ(data.motion.pixels[3], 1003.0f);
   EXPECT_EQ(data.depth.pixels[5], 2005.0f);     // part 2
@@ -115,7 +115,7 @@ TEST(Tiled, TiledAndScanlineFilesReadTheSame) {
   const FrameData tile = readFrame(layout, 1);
   EXPECT_EQ(tile.colorSpec.tile_width, 16);  // it really is tiled
   EXPECT_EQ(scan.colorSpec.tile_width, 0);
-  EXPECT_EQ(tile.color.pixels, scan.color.pixels);
+  EXPECT_EQ(tile.color.toFloat().pixels, scan.color.toFloat().pixels);
   EXPECT_EQ(tile.depth.pixels, scan.depth.pixels);
 }
 
@@ -141,7 +141,7 @@ TEST(Windows, OverscanAndCropWindowsAreReportedRelativeToTheDisplay) {
   AovLayout layout;
   layout.color = {folder + "/over.####.exr", {"R", "G", "B", "A"}, ""};
   const FrameData o = readFrame(layout, 1);
-  EXPECT_EQ(o.color.width, 12);
+  EXPECT_EQ(o.color.width(), 12);
   EXPECT_EQ(o.window.dataX, -2);
   EXPECT_EQ(o.window.dataY, -2);
   EXPECT_EQ(o.window.displayWidth, 8);

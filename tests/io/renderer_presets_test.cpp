@@ -116,10 +116,10 @@ TEST(RendererPresets, EveryPresetConvertsKnownValuesToInternalConventions) {
     }
     EXPECT_TRUE(std::isinf(data.depth.pixels.back())) << "no-hit value " << c.noHitDepth;
     // Color channels come in the preset's R, G, B, A order.
-    EXPECT_FLOAT_EQ(data.color.pixels[0], 0.0f);
-    EXPECT_FLOAT_EQ(data.color.pixels[1], 0.25f);
-    EXPECT_FLOAT_EQ(data.color.pixels[2], 0.5f);
-    EXPECT_FLOAT_EQ(data.color.pixels[3], 0.75f);
+    EXPECT_FLOAT_EQ(data.color.toFloat().pixels[0], 0.0f);
+    EXPECT_FLOAT_EQ(data.color.toFloat().pixels[1], 0.25f);
+    EXPECT_FLOAT_EQ(data.color.toFloat().pixels[2], 0.5f);
+    EXPECT_FLOAT_EQ(data.color.toFloat().pixels[3], 0.75f);
   }
 }
 

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <string>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -67,8 +68,10 @@ class Texture {
   Texture(const Functions& gl, int width, int height, GLenum internalFormat,
           Filter filter = Filter::Nearest);
 
-  // Uploads width*height pixels of `components` floats each (1, 2, 3 or 4), tightly packed.
-  void upload(const float* pixels, int components);
+  // Uploads width*height pixels of `components` samples each (1, 2, 3 or 4), tightly packed;
+  // `type` GL_FLOAT or GL_HALF_FLOAT. Half data into a 16F texture is a plain copy.
+  void upload(const void* pixels, int components, GLenum type);
+  void upload(const float* pixels, int components) { upload(pixels, components, GL_FLOAT); }
   void bind(int unit) const;
 
   GLuint id() const { return handle_.id(); }
@@ -92,6 +95,10 @@ class Framebuffer {
   void bind() const;
   // Reads attachment `index` back as tightly packed RGBA floats, row 0 first.
   std::vector<float> readRGBA(int index = 0) const;
+  // The same into `pixels` (width*height*4 samples of `type`, GL_FLOAT or GL_HALF_FLOAT). GL
+  // rounds a float attachment to half to nearest even, as Imath does (tests/gl checks it), so
+  // reading back as half gives the file what narrowing on the CPU would.
+  void readRGBA(void* pixels, GLenum type, int index = 0) const;
 
   GLuint id() const { return handle_.id(); }
 
@@ -127,7 +134,8 @@ class Program {
 
   void use() const;
   // Uniform setters (glProgramUniform*: the program need not be in use). A name the linker
-  // removed (unused) is silently ignored, as GL does.
+  // removed (unused) is silently ignored, as GL does. Locations are looked up once per name
+  // and cached, so setting uniforms by name every frame costs no GL queries.
   void set(const char* name, int value) const;
   void set(const char* name, float value) const;
   void set(const char* name, float x, float y) const;
@@ -139,6 +147,7 @@ class Program {
  private:
   GLint location(const char* name) const;
   Handle<ProgramDeleter> handle_;
+  mutable std::unordered_map<std::string, GLint> locations_;
 };
 
 // Draws one triangle covering the viewport; the vertex shader "fullscreen.vert" derives the

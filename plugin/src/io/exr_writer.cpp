@@ -72,16 +72,29 @@ class TemporaryFile {
   bool committed_ = false;
 };
 
-// RGBA followed by the extra channels, interleaved per pixel as the writer wants them.
-std::vector<float> interleave(const Image& rgba, const ExtraChannels& extra) {
+// RGBA (widened to float) followed by the extra channels, interleaved per pixel as the writer
+// wants them.
+std::vector<float> interleave(const ImageView& rgba, const ExtraChannels& extra) {
+  const std::size_t pixelCount = std::size_t(rgba.width) * rgba.height;
+  std::vector<float> color(pixelCount * 4);
+  OIIO::convert_pixel_values(rgba.type == SampleType::Half ? OIIO::TypeHalf : OIIO::TypeFloat,
+                             rgba.data, OIIO::TypeFloat, color.data(), int(color.size()));
   const int channels = 4 + extra.image.channels;
-  std::vector<float> pixels(std::size_t(rgba.width) * rgba.height * channels);
-  for (std::size_t i = 0, n = std::size_t(rgba.width) * rgba.height; i < n; ++i) {
-    std::copy_n(&rgba.pixels[i * 4], 4, &pixels[i * channels]);
+  std::vector<float> pixels(pixelCount * channels);
+  for (std::size_t i = 0; i < pixelCount; ++i) {
+    std::copy_n(&color[i * 4], 4, &pixels[i * channels]);
     std::copy_n(&extra.image.pixels[i * extra.image.channels], extra.image.channels,
                 &pixels[i * channels + 4]);
   }
   return pixels;
+}
+
+// The compression attribute for OIIO: a bare zip or zips gets taa's default level.
+std::string compressionAttribute(const std::string& compression) {
+  if (compression == "zip" || compression == "zips") {
+    return compression + ":" + std::to_string(kDefaultZipLevel);
+  }
+  return compression;
 }
 
 // ".<name>.taa-tmp-<pid>-<n>.exr": hidden, unique per process and call, and ending in .exr.
@@ -115,7 +128,7 @@ OIIO::TypeDesc colorFormat(const WriteOptions& options, const OIIO::ImageSpec& t
   return format == OIIO::TypeHalf ? OIIO::TypeHalf : OIIO::TypeFloat;
 }
 
-OIIO::ImageSpec makeOutputSpec(const Image& rgba, const OIIO::ImageSpec& templateSpec,
+OIIO::ImageSpec makeOutputSpec(const ImageView& rgba, const OIIO::ImageSpec& templateSpec,
                                const WriteOptions& options, const ExtraChannels& extra) {
   const bool hasTemplate = templateSpec.width > 0 && templateSpec.height > 0;
   const OIIO::TypeDesc format = colorFormat(options, templateSpec, hasTemplate);
@@ -139,7 +152,7 @@ OIIO::ImageSpec makeOutputSpec(const Image& rgba, const OIIO::ImageSpec& templat
       if (!describesOldLayout(attribute.name().string())) spec.extra_attribs.push_back(attribute);
     }
   }
-  spec.attribute("compression", options.compression);
+  spec.attribute("compression", compressionAttribute(options.compression));
   return spec;
 }
 
@@ -150,6 +163,88 @@ std::string firstDuplicate(const std::vector<std::string>& names) {
     }
   }
   return "";
+}
+
+// writeExrAtomic for either sample type.
+void writeView(const std::string& path, const ImageView& rgba, const OIIO::ImageSpec& templateSpec,
+               const WriteOptions& options, const ExtraChannels& extra) {
+  const ErrorContext context{path, std::nullopt, ""};
+  try {
+    validateCompression(options.compression);
+  } catch (const Error& error) {
+    throw Error(error.description(), context);
+  }
+  if (rgba.channels != 4 || !rgba) {
+    throw Error("the image to write must have 4 channels (RGBA) and pixels", context);
+  }
+  if (!extra.names.empty() &&
+      (int(extra.names.size()) != extra.image.channels || extra.image.width != rgba.width ||
+       extra.image.height != rgba.height)) {
+    throw Error("extra channels must match their names and the image size", context);
+  }
+  if (!extra.formats.empty() && extra.formats.size() != extra.names.size()) {
+    throw Error("extra channel formats must match their names", context);
+  }
+  if (colorNames(options).size() != 4) {
+    throw Error("the output needs 4 color channel names, " +
+                    std::to_string(options.rgbaNames.size()) + " given",
+                context);
+  }
+  std::vector<std::string> allNames = colorNames(options);
+  allNames.insert(allNames.end(), extra.names.begin(), extra.names.end());
+  if (const std::string twice = firstDuplicate(allNames); !twice.empty()) {
+    throw Error("output channel " + twice + " is named twice", {path, std::nullopt, twice});
+  }
+  const bool hasTemplate = templateSpec.width > 0 && templateSpec.height > 0;
+  if (hasTemplate && (rgba.width != templateSpec.width || rgba.height != templateSpec.height)) {
+    throw Error("the image to write is " + std::to_string(rgba.width) + "x" +
+                    std::to_string(rgba.height) + " but its template's data window is " +
+                    std::to_string(templateSpec.width) + "x" +
+                    std::to_string(templateSpec.height),
+                context);
+  }
+
+  const fs::path finalPath(path);
+  const fs::path folder = finalPath.parent_path().empty() ? fs::path(".") : finalPath.parent_path();
+  std::error_code folderError;
+  fs::create_directories(folder, folderError);
+  if (folderError || !fs::is_directory(folder)) {
+    const std::string reason = folderError ? folderError.message() : "not a folder";
+    throw Error("cannot create the output folder " + folder.string() + ": " + reason, context);
+  }
+
+  TemporaryFile temporary(temporaryPathFor(finalPath));
+  const OIIO::ImageSpec spec = makeOutputSpec(rgba, templateSpec, options, extra);
+  // Ask for the EXR writer by name: the final path's extension must not choose the format.
+  auto output = OIIO::ImageOutput::create("openexr");
+  if (!output) throw Error("cannot create an OpenEXR writer: " + OIIO::geterror(), context);
+  const auto fail = [&](const std::string& what) {
+    std::string reason = output->geterror();
+    if (reason.empty()) reason = "unknown error";
+    throw Error(what + ": " + reason, context);
+  };
+  if (!output->open(temporary.path().string(), spec)) fail("cannot open for writing");
+  // Without extra channels the samples go to OIIO as they are (converted only into a file of
+  // the other type); with them, everything is interleaved as float, which converts exactly.
+  bool written = false;
+  if (extra.names.empty()) {
+    const OIIO::TypeDesc type = rgba.type == SampleType::Half ? OIIO::TypeHalf : OIIO::TypeFloat;
+    written = output->write_image(type, rgba.data);
+  } else {
+    written = output->write_image(OIIO::TypeFloat, interleave(rgba, extra).data());
+  }
+  if (!written) fail("cannot write pixels");
+  if (!output->close() || output->has_error()) fail("cannot finish writing");
+  output.reset();
+
+  // rename() replaces an existing file atomically on POSIX: readers see old or new, never half.
+  if (std::rename(temporary.path().c_str(), finalPath.c_str()) != 0) {
+    const int renameErrno = errno;
+    throw Error("cannot move the written file into place: " +
+                    std::string(std::strerror(renameErrno)),
+                context);
+  }
+  temporary.commit();
 }
 
 }  // namespace
@@ -205,79 +300,21 @@ void validateCompression(const std::string& compression) {
   }
 }
 
+SampleType outputSampleType(const WriteOptions& options, const OIIO::ImageSpec& templateSpec) {
+  const bool hasTemplate = templateSpec.width > 0 && templateSpec.height > 0;
+  return colorFormat(options, templateSpec, hasTemplate) == OIIO::TypeHalf ? SampleType::Half
+                                                                          : SampleType::Float;
+}
+
 void writeExrAtomic(const std::string& path, const Image& rgba, const OIIO::ImageSpec& templateSpec,
                     const WriteOptions& options, const ExtraChannels& extra) {
-  const ErrorContext context{path, std::nullopt, ""};
-  try {
-    validateCompression(options.compression);
-  } catch (const Error& error) {
-    throw Error(error.description(), context);
-  }
-  if (rgba.channels != 4 || rgba.empty()) {
-    throw Error("the image to write must have 4 channels (RGBA) and pixels", context);
-  }
-  if (!extra.names.empty() &&
-      (int(extra.names.size()) != extra.image.channels || extra.image.width != rgba.width ||
-       extra.image.height != rgba.height)) {
-    throw Error("extra channels must match their names and the image size", context);
-  }
-  if (!extra.formats.empty() && extra.formats.size() != extra.names.size()) {
-    throw Error("extra channel formats must match their names", context);
-  }
-  if (colorNames(options).size() != 4) {
-    throw Error("the output needs 4 color channel names, " +
-                    std::to_string(options.rgbaNames.size()) + " given",
-                context);
-  }
-  std::vector<std::string> allNames = colorNames(options);
-  allNames.insert(allNames.end(), extra.names.begin(), extra.names.end());
-  if (const std::string twice = firstDuplicate(allNames); !twice.empty()) {
-    throw Error("output channel " + twice + " is named twice", {path, std::nullopt, twice});
-  }
-  const bool hasTemplate = templateSpec.width > 0 && templateSpec.height > 0;
-  if (hasTemplate && (rgba.width != templateSpec.width || rgba.height != templateSpec.height)) {
-    throw Error("the image to write is " + std::to_string(rgba.width) + "x" +
-                    std::to_string(rgba.height) + " but its template's data window is " +
-                    std::to_string(templateSpec.width) + "x" +
-                    std::to_string(templateSpec.height),
-                context);
-  }
+  writeView(path, &rgba, templateSpec, options, extra);
+}
 
-  const fs::path finalPath(path);
-  const fs::path folder = finalPath.parent_path().empty() ? fs::path(".") : finalPath.parent_path();
-  std::error_code folderError;
-  fs::create_directories(folder, folderError);
-  if (folderError || !fs::is_directory(folder)) {
-    const std::string reason = folderError ? folderError.message() : "not a folder";
-    throw Error("cannot create the output folder " + folder.string() + ": " + reason, context);
-  }
-
-  TemporaryFile temporary(temporaryPathFor(finalPath));
-  const OIIO::ImageSpec spec = makeOutputSpec(rgba, templateSpec, options, extra);
-  // Ask for the EXR writer by name: the final path's extension must not choose the format.
-  auto output = OIIO::ImageOutput::create("openexr");
-  if (!output) throw Error("cannot create an OpenEXR writer: " + OIIO::geterror(), context);
-  const auto fail = [&](const std::string& what) {
-    std::string reason = output->geterror();
-    if (reason.empty()) reason = "unknown error";
-    throw Error(what + ": " + reason, context);
-  };
-  if (!output->open(temporary.path().string(), spec)) fail("cannot open for writing");
-  const std::vector<float> withExtra = extra.names.empty() ? std::vector<float>()
-                                                             : interleave(rgba, extra);
-  const float* pixels = extra.names.empty() ? rgba.pixels.data() : withExtra.data();
-  if (!output->write_image(OIIO::TypeFloat, pixels)) fail("cannot write pixels");
-  if (!output->close() || output->has_error()) fail("cannot finish writing");
-  output.reset();
-
-  // rename() replaces an existing file atomically on POSIX: readers see old or new, never half.
-  if (std::rename(temporary.path().c_str(), finalPath.c_str()) != 0) {
-    const int renameErrno = errno;
-    throw Error("cannot move the written file into place: " +
-                    std::string(std::strerror(renameErrno)),
-                context);
-  }
-  temporary.commit();
+void writeExrAtomic(const std::string& path, const TypedImage& rgba,
+                    const OIIO::ImageSpec& templateSpec, const WriteOptions& options,
+                    const ExtraChannels& extra) {
+  writeView(path, &rgba, templateSpec, options, extra);
 }
 
 }  // namespace taa::io

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <deque>
 #include <filesystem>
 #include <limits>
@@ -96,11 +97,15 @@ int findPart(const OpenExr& file, const AovSource& source, const std::string& ao
   return 0;
 }
 
-// Reads `names` from subimage 0, in the order asked. EXR sorts channels by name, so the file
-// order differs from the asked order: one read covers the smallest contiguous range holding
-// every asked channel, then the asked ones are picked out.
-Image readChannels(OpenExr& file, int part, const std::vector<std::string>& names,
-                   const std::string& aovName, int frame) {
+// Reads `names` of part `part` into `out`: interleaved, `outChannels` per pixel (the first
+// names.size() of them are written), converted to `type` (OIIO converts; none when the file
+// stores that type). Channels are found by name: EXR sorts them, so file order differs from the
+// asked order. In the usual case, the asked channels lie in file order side by side and OIIO
+// reads them straight into `out`; otherwise one read covers the smallest contiguous range
+// holding every asked channel and they are picked out of it.
+void readChannelsInto(OpenExr& file, int part, const std::vector<std::string>& names,
+                      const std::string& aovName, int frame, OIIO::TypeDesc type, void* out,
+                      int outChannels) {
   const OIIO::ImageSpec& spec = file.parts[std::size_t(part)];
   std::vector<int> indices;
   std::vector<std::string> missing;
@@ -126,25 +131,43 @@ Image readChannels(OpenExr& file, int part, const std::vector<std::string>& name
   const int channelBegin = *std::min_element(indices.begin(), indices.end());
   const int channelEnd = *std::max_element(indices.begin(), indices.end()) + 1;
   const int stride = channelEnd - channelBegin;
+  bool inFileOrder = stride == int(indices.size());
+  for (std::size_t c = 0; c < indices.size() && inFileOrder; ++c) {
+    inFileOrder = indices[c] == channelBegin + int(c);
+  }
+  const std::size_t sampleSize = type.size();
   const std::size_t pixelCount = std::size_t(spec.width) * spec.height;
-  std::vector<float> buffer(pixelCount * stride);
+  std::vector<unsigned char> range;
+  if (!inFileOrder) range.resize(pixelCount * std::size_t(stride) * sampleSize);
+  void* target = inFileOrder ? out : range.data();
+  const OIIO::stride_t xstride =
+      OIIO::stride_t((inFileOrder ? outChannels : stride) * sampleSize);
   // OIIO may report a failure only through its error state, so check both.
-  const bool ok = file.input->read_image(part, 0, channelBegin, channelEnd, OIIO::TypeFloat,
-                                         buffer.data());
+  const bool ok = file.input->read_image(part, 0, channelBegin, channelEnd, type, target, xstride);
   if (!ok || file.input->has_error()) {
     std::string reason = file.input->geterror();
     if (reason.empty()) reason = "unknown error";
     throw Error("cannot read the " + aovName + " pixels (truncated or corrupt file?): " + reason,
                 {file.path, frame, joinNames(names)});
   }
-
-  Image image(spec.width, spec.height, static_cast<int>(names.size()));
+  if (inFileOrder) return;
+  auto* destination = static_cast<unsigned char*>(out);
   for (std::size_t pixel = 0; pixel < pixelCount; ++pixel) {
     for (std::size_t c = 0; c < indices.size(); ++c) {
-      image.pixels[pixel * indices.size() + c] =
-          buffer[pixel * stride + std::size_t(indices[c] - channelBegin)];
+      std::memcpy(destination + (pixel * outChannels + c) * sampleSize,
+                  &range[(pixel * stride + std::size_t(indices[c] - channelBegin)) * sampleSize],
+                  sampleSize);
     }
   }
+}
+
+// `names` as a float image of as many channels.
+Image readFloatChannels(OpenExr& file, int part, const std::vector<std::string>& names,
+                        const std::string& aovName, int frame) {
+  const OIIO::ImageSpec& spec = file.parts[std::size_t(part)];
+  Image image(spec.width, spec.height, int(names.size()));
+  readChannelsInto(file, part, names, aovName, frame, OIIO::TypeFloat, image.pixels.data(),
+                   image.channels);
   return image;
 }
 
@@ -194,23 +217,51 @@ std::string aovPath(const AovSource& source, const std::string& colorPath, int f
   return source.pattern.empty() ? colorPath : expandFramePattern(source.pattern, frame);
 }
 
-Image toRgba(const Image& color, int& nonFiniteCount, Image& nonFiniteMask) {
-  Image rgba(color.width, color.height, 4);
-  nonFiniteMask = Image(color.width, color.height, 1);
-  const std::size_t pixelCount = std::size_t(color.width) * color.height;
-  for (std::size_t pixel = 0; pixel < pixelCount; ++pixel) {
-    float* out = &rgba.pixels[pixel * 4];
-    const float* in = &color.pixels[pixel * color.channels];
-    out[3] = 1.0f;  // a color without alpha is opaque
-    for (int c = 0; c < color.channels; ++c) {
-      if (std::isfinite(in[c])) {
-        out[c] = in[c];
-      } else {
-        out[c] = 0.0f;
-        ++nonFiniteCount;
-        nonFiniteMask.pixels[pixel] = 1.0f;
-      }
+// Half when the file stores every asked colour channel as half (it stays half up to the GPU and
+// back), else float.
+SampleType colorSampleType(const OIIO::ImageSpec& spec, const std::vector<std::string>& names) {
+  for (const std::string& name : names) {
+    const auto found = std::find(spec.channelnames.begin(), spec.channelnames.end(), name);
+    if (found == spec.channelnames.end()) return SampleType::Float;  // the read reports it
+    if (spec.channelformat(int(found - spec.channelnames.begin())) != OIIO::TypeHalf) {
+      return SampleType::Float;
     }
+  }
+  return SampleType::Half;
+}
+
+bool isFinite(float value) { return std::isfinite(value); }
+bool isFinite(Imath::half value) { return value.isFinite(); }
+
+// Fills alpha with 1 when the colour has 3 channels, replaces NaN/Inf by 0 and counts them. The
+// mask (1 where a value was replaced) is made only when some value is.
+template <typename T>
+void finishRgba(ImageOf<T>& rgba, int inputChannels, int& nonFiniteCount, Image& nonFiniteMask) {
+  const std::size_t pixelCount = std::size_t(rgba.width) * rgba.height;
+  if (inputChannels == 3) {
+    for (std::size_t pixel = 0; pixel < pixelCount; ++pixel) rgba.pixels[pixel * 4 + 3] = T(1.0f);
+  }
+  for (std::size_t i = 0; i < rgba.pixels.size(); ++i) {
+    if (isFinite(rgba.pixels[i])) continue;
+    rgba.pixels[i] = T(0.0f);
+    ++nonFiniteCount;
+    if (nonFiniteMask.empty()) nonFiniteMask = Image(rgba.width, rgba.height, 1);
+    nonFiniteMask.pixels[i / 4] = 1.0f;
+  }
+}
+
+// The colour channels as RGBA in their stored type (see colorSampleType).
+TypedImage readColor(OpenExr& file, int part, const std::vector<std::string>& names, int frame,
+                     int& nonFiniteCount, Image& nonFiniteMask) {
+  const OIIO::ImageSpec& spec = file.parts[std::size_t(part)];
+  const SampleType type = colorSampleType(spec, names);
+  TypedImage rgba(spec.width, spec.height, 4, type);
+  readChannelsInto(file, part, names, "color", frame,
+                   type == SampleType::Half ? OIIO::TypeHalf : OIIO::TypeFloat, rgba.data(), 4);
+  if (HalfImage* half = rgba.halves()) {
+    finishRgba(*half, int(names.size()), nonFiniteCount, nonFiniteMask);
+  } else {
+    finishRgba(*rgba.floats(), int(names.size()), nonFiniteCount, nonFiniteMask);
   }
   return rgba;
 }
@@ -275,7 +326,9 @@ ExtraChannels readPassthrough(OpenExr& file, int part, const std::vector<std::st
     extra.formats.push_back(spec.channelformat(c) == OIIO::TypeHalf ? OIIO::TypeHalf
                                                                    : OIIO::TypeFloat);
   }
-  if (!extra.names.empty()) extra.image = readChannels(file, part, extra.names, "color", frame);
+  if (!extra.names.empty()) {
+    extra.image = readFloatChannels(file, part, extra.names, "color", frame);
+  }
   return extra;
 }
 
@@ -297,8 +350,8 @@ FrameData readFrame(const AovLayout& layout, int frame, const CameraInputs& came
   OpenExr& colorFile = files.get(data.colorPath, "color");
   const int colorPart = findPart(colorFile, layout.color, "color", frame);
   data.colorSpec = colorFile.parts[std::size_t(colorPart)];
-  data.color = toRgba(readChannels(colorFile, colorPart, layout.color.channels, "color", frame),
-                      data.nonFiniteColorValues, data.nonFiniteMask);
+  data.color = readColor(colorFile, colorPart, layout.color.channels, frame,
+                         data.nonFiniteColorValues, data.nonFiniteMask);
   data.window = rasterWindow(data.colorSpec);
   chooseCamera(data, cameras);
   data.passthrough = readPassthrough(colorFile, colorPart, layout.passthrough, frame);
@@ -307,7 +360,7 @@ FrameData readFrame(const AovLayout& layout, int frame, const CameraInputs& came
     OpenExr& file = files.get(aovPath(*layout.depth, data.colorPath, frame), "depth");
     const int part = findPart(file, *layout.depth, "depth", frame);
     requireSameWindow(file, part, data.colorSpec, "depth", frame);
-    data.depth = readChannels(file, part, layout.depth->channels, "depth", frame);
+    data.depth = readFloatChannels(file, part, layout.depth->channels, "depth", frame);
     if (layout.depthConvention.kind == DepthKind::Radial) {
       radialToPlanar(data.depth, pixelRayFor(data, layout.depthConvention, file.path),
                      layout.depthConvention.noHitAbove);
@@ -319,7 +372,7 @@ FrameData readFrame(const AovLayout& layout, int frame, const CameraInputs& came
     OpenExr& file = files.get(aovPath(*layout.motion, data.colorPath, frame), "motion");
     const int part = findPart(file, *layout.motion, "motion", frame);
     requireSameWindow(file, part, data.colorSpec, "motion", frame);
-    data.motion = readChannels(file, part, layout.motion->channels, "motion", frame);
+    data.motion = readFloatChannels(file, part, layout.motion->channels, "motion", frame);
     convertMotion(data.motion, layout.motionConvention, data.window);
   }
   return data;

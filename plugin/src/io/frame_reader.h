@@ -16,11 +16,13 @@ namespace taa::io {
 
 struct FrameData {
   int frame = 0;
-  Image color;   // RGBA, premultiplied as stored; NaN/Inf replaced by 0
+  TypedImage color;  // RGBA, premultiplied as stored; half when the file's colour channels are
+                    // all half, else float; NaN/Inf replaced by 0
   Image depth;   // 1 channel, planar, +inf = no hit; empty if the layout has no depth
   Image motion;  // 2 channels, pixels, y down, to previous; empty if the layout has no motion
   int nonFiniteColorValues = 0;   // how many color values were NaN/Inf and scrubbed to 0
-  Image nonFiniteMask;            // 1 channel: 1 where a color value was scrubbed, else 0
+  Image nonFiniteMask;            // 1 channel: 1 where a color value was scrubbed, else 0;
+                                  // empty when none was
   std::optional<FrameCamera> camera;  // from the sidecar, else the color header's
                                       // worldToCamera + worldToNDC
   NdcConvention ndc = NdcConvention::ZeroOneYDown;  // the convention of camera->worldToNdc
@@ -40,6 +42,7 @@ struct CameraInputs {
 // pattern is read from the color file, which is opened once. Channels are looked up by name in
 // the AOV's part (multi-part files: by part name, or the first part holding every channel), in
 // the order the layout lists them (not the file's order). Scanline and tiled files alike.
+// Colour keeps its stored type (all half: half, else float); depth and motion are float.
 // Conversions: color NaN/Inf -> 0 (counted), 3 channels -> A = 1; depth per DepthConvention
 // (radial depth uses the frame's camera, else the convention's field of view); motion per
 // MotionConvention (Ndc and Uv units refer to the display window), then NaN/Inf -> 0.

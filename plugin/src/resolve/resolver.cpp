@@ -3,6 +3,7 @@
 #include <optional>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "color/ocio_bracket.h"
 #include "color/ocio_gpu_resources.h"
@@ -42,20 +43,22 @@ std::vector<std::string> resolveDefines(const ResolveOptions& o) {
           define("NEIGHBOURHOOD", o.neighbourhood == Neighbourhood::Plus5 ? 5 : 9)};
 }
 
-void checkPlane(const Image* plane, const Image& color, int channels, const char* name) {
+void checkPlane(const ImageView& plane, const ImageView& color, int channels, const char* name) {
   if (!plane) return;
-  if (plane->width != color.width || plane->height != color.height) {
-    throw Error(std::string(name) + " is " + std::to_string(plane->width) + "x" +
-                    std::to_string(plane->height) + " but color is " +
+  if (plane.width != color.width || plane.height != color.height) {
+    throw Error(std::string(name) + " is " + std::to_string(plane.width) + "x" +
+                    std::to_string(plane.height) + " but color is " +
                     std::to_string(color.width) + "x" + std::to_string(color.height),
                 {"", std::nullopt, name});
   }
-  if (plane->channels != channels) {
+  if (plane.channels != channels) {
     throw Error(std::string(name) + " must have " + std::to_string(channels) +
-                    " channels, has " + std::to_string(plane->channels),
+                    " channels, has " + std::to_string(plane.channels),
                 {"", std::nullopt, name});
   }
 }
+
+GLenum glType(SampleType type) { return type == SampleType::Half ? GL_HALF_FLOAT : GL_FLOAT; }
 
 void requireRange(float value, float lo, float hi, const char* name) {
   if (!(value >= lo && value <= hi)) {
@@ -102,13 +105,17 @@ struct Resolver::Impl {
   gl::Program resolveProgram, outputProgram;
   color::OcioGpuResources toWorkingLuts, fromWorkingLuts;
 
-  // Per-size resources, rebuilt when the frame size changes.
+  // Per-size resources, rebuilt when the frame size changes. Texture formats: the current
+  // colour in its input type (half sampled is exactly half widened); history, depth, motion
+  // and the output stay 32-bit float; sample counts (integers <= 1024) are exact in R16F.
   int width = 0, height = 0;
+  SampleType currentType = SampleType::Float;
   gl::Texture current, motion, debug, output;
   gl::Texture depth[2];         // this frame's and the previous frame's, alternating
   gl::Texture history[2];       // working space, alternating
   gl::Texture historyState[2];  // sample counts, alternating with history
   gl::Framebuffer resolveTarget[2];
+  bool hasDebugTarget = false;  // resolveTarget has the debug attachment
   gl::Framebuffer outputTarget;
   int latest = 0;        // index of the history holding the last result
   int latestDepth = 0;   // index of the depth texture holding the last frame's depth
@@ -151,22 +158,40 @@ struct Resolver::Impl {
     programKey = key;
   }
 
-  void allocate(int w, int h) {
+  void allocateCurrent(SampleType type) {
+    currentType = type;
+    current = gl::Texture(gl, width, height, type == SampleType::Half ? GL_RGBA16F : GL_RGBA32F);
+  }
+
+  void allocate(int w, int h, SampleType colorType) {
     width = w;
     height = h;
-    current = gl::Texture(gl, w, h, GL_RGBA32F);
+    allocateCurrent(colorType);
     motion = gl::Texture(gl, w, h, GL_RG32F);
-    debug = gl::Texture(gl, w, h, GL_RGBA32F);
     output = gl::Texture(gl, w, h, GL_RGBA32F);
     for (int i = 0; i < 2; ++i) {
       depth[i] = gl::Texture(gl, w, h, GL_R32F);
       history[i] = gl::Texture(gl, w, h, GL_RGBA32F, gl::Texture::Filter::Linear);
-      historyState[i] = gl::Texture(gl, w, h, GL_R32F);
-      resolveTarget[i] = gl::Framebuffer(gl, {&history[i], &historyState[i], &debug});
+      historyState[i] = gl::Texture(gl, w, h, GL_R16F);
     }
+    buildResolveTargets(needsDebug());
     outputTarget = gl::Framebuffer(gl, output);
     hasHistory = false;
     hasPreviousDepth = false;
+  }
+
+  bool needsDebug() const { return debugOutput || options.cutDetection > 0.0f; }
+
+  // The resolve pass's targets. The debug attachment (float RGBA: 133 MB at 4K) exists only
+  // while something reads it; without it GL drops the shader's debug output.
+  void buildResolveTargets(bool withDebug) {
+    debug = withDebug ? gl::Texture(gl, width, height, GL_RGBA32F) : gl::Texture();
+    for (int i = 0; i < 2; ++i) {
+      std::vector<const gl::Texture*> attachments = {&history[i], &historyState[i]};
+      if (withDebug) attachments.push_back(&debug);
+      resolveTarget[i] = gl::Framebuffer(gl, attachments);
+    }
+    hasDebugTarget = withDebug;
   }
 
   void setResolveUniforms(const ResolveInput& input, bool useCamera) {
@@ -228,19 +253,24 @@ struct Resolver::Impl {
     gl::checkError(gl, "output pass");
   }
 
-  Image resolve(const ResolveInput& input) {
-    if (!input.color || input.color->channels != 4 || input.color->empty()) {
+  TypedImage resolve(const ResolveInput& input, SampleType outputType) {
+    const ImageView& color = input.color;
+    if (!color || color.channels != 4) {
       throw Error("resolve needs an RGBA color image", {"", std::nullopt, "color"});
     }
-    const Image& color = *input.color;
     checkPlane(input.depth, color, 1, "depth");
     checkPlane(input.motion, color, 2, "motion");
-    if (color.width != width || color.height != height) allocate(color.width, color.height);
+    if (color.width != width || color.height != height) {
+      allocate(color.width, color.height, color.type);
+    } else if (color.type != currentType) {
+      allocateCurrent(color.type);
+    }
+    if (needsDebug() != hasDebugTarget) buildResolveTargets(needsDebug());
 
     const int currentDepth = 1 - latestDepth;
-    current.upload(color.pixels.data(), 4);
-    if (input.motion) motion.upload(input.motion->pixels.data(), 2);
-    if (input.depth) depth[currentDepth].upload(input.depth->pixels.data(), 1);
+    current.upload(color.data, 4, glType(color.type));
+    if (input.motion) motion.upload(input.motion.data, 2, glType(input.motion.type));
+    if (input.depth) depth[currentDepth].upload(input.depth.data, 1, glType(input.depth.type));
     const bool useCamera = hasHistory && input.camera && previousCamera;
     setResolveUniforms(input, useCamera);
 
@@ -268,11 +298,11 @@ struct Resolver::Impl {
     latest = target;
     latestDepth = currentDepth;
     hasHistory = true;
-    hasPreviousDepth = input.depth != nullptr;
+    hasPreviousDepth = bool(input.depth);
     previousCamera = input.camera ? std::optional<FrameCamera>(*input.camera) : std::nullopt;
 
-    Image result(width, height, 4);
-    result.pixels = outputTarget.readRGBA();
+    TypedImage result(width, height, 4, outputType);
+    outputTarget.readRGBA(result.data(), glType(outputType));
     return result;
   }
 };
@@ -284,7 +314,13 @@ Resolver::Resolver(gl::Context& context, const ResolveOptions& options) {
 
 Resolver::~Resolver() = default;
 
-Image Resolver::resolve(const ResolveInput& input) { return impl_->resolve(input); }
+Image Resolver::resolve(const ResolveInput& input) {
+  return std::move(*impl_->resolve(input, SampleType::Float).floats());
+}
+
+TypedImage Resolver::resolve(const ResolveInput& input, SampleType outputType) {
+  return impl_->resolve(input, outputType);
+}
 
 void Resolver::resetHistory() {
   impl_->hasHistory = false;

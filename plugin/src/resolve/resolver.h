@@ -13,11 +13,13 @@
 
 namespace taa {
 
-// One frame's inputs, in internal conventions (DESIGN.md section 3), all the same size.
+// One frame's inputs, in internal conventions (DESIGN.md section 3), all the same size. Each
+// takes a pointer to an Image, HalfImage or TypedImage (util/image.h); half or float, the
+// resolve samples the same values (half colour is uploaded as half, never widened on the CPU).
 struct ResolveInput {
-  const Image* color = nullptr;   // RGBA, required
-  const Image* depth = nullptr;   // 1 channel, optional (dilation, disocclusion, camera motion)
-  const Image* motion = nullptr;  // 2 channels, optional (absent = camera motion or static)
+  ImageView color;   // RGBA, required
+  ImageView depth;   // 1 channel, optional (dilation, disocclusion, camera motion)
+  ImageView motion;  // 2 channels, optional (absent = camera motion or static)
   glm::vec2 jitter{0.0f};         // this frame's sample offset, pixels, y down
   const FrameCamera* camera = nullptr;  // optional: enables camera motion with the previous one
   RasterWindow window;            // where the pixels sit in the display window (for the camera)
@@ -41,6 +43,9 @@ class Resolver {
   // frame, a frame after resetHistory() and a frame whose size differs from the last one use
   // the current frame alone. Throws taa::Error on malformed input or a GL failure.
   Image resolve(const ResolveInput& input);
+  // The same, read back as `outputType`: half is rounded to nearest even by GL, exactly as
+  // narrowing the float result would, at half the read-back cost and none on the writer's side.
+  TypedImage resolve(const ResolveInput& input, SampleType outputType);
 
   // Forget history (a cut, or a gap in the frame sequence).
   void resetHistory();

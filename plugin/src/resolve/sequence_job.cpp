@@ -223,18 +223,20 @@ void runSequenceJob(const SequenceJob& job, const JobCallbacks& callbacks) {
     input.camera = data.camera ? &*data.camera : nullptr;
     input.window = data.window;
     input.ndc = data.ndc;
-    Image output;
-    try {
-      output = resolver.resolve(input);
-    } catch (const Error& e) {
-      throw Error(e.description(), {data.colorPath, frame, e.context().channel});
-    }
+    OIIO::ImageSpec spec = data.colorSpec;
+    // Read back in the type the file gets: a half output goes from GL to the encoder as is.
+    TypedImage output = [&] {
+      try {
+        return resolver.resolve(input, io::outputSampleType(write, spec));
+      } catch (const Error& e) {
+        throw Error(e.description(), {data.colorPath, frame, e.context().channel});
+      }
+    }();
 
     report.cutDetected = resolver.lastFrameWasCut();
     report.inputPath = data.colorPath;
     report.outputPath = io::expandFramePattern(job.outputPattern, frame);
     report.nonFiniteColorValues = data.nonFiniteColorValues;
-    OIIO::ImageSpec spec = data.colorSpec;
     spec.attribute("taa:version", TAA_VERSION_STRING);
     spec.attribute("taa:options", options);
     io::ExtraChannels extra = passthroughWithout(data.passthrough, write.rgbaNames);
