@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <future>
 #include <iostream>
 #include <stdexcept>
 #include <optional>
@@ -116,10 +117,17 @@ void generate(const Arguments& args) {
   const auto scene = taa::scenes::makeScene(args.scene, args.width, args.height);
   taa::scenes::RenderSettings settings;
   settings.truthSamplesPerAxis = args.truthSamples;
+  // Each frame is written while the next one renders (compressing the EXRs is a few percent of
+  // the time, on one thread); one write in flight at a time, its error rethrown here.
+  std::future<void> writing;
   for (int frame = args.firstFrame; frame <= args.lastFrame; ++frame) {
-    taa::scenes::writeFrame(scene->render(frame, settings), scene->name(), args.layout,
-                            args.outDir);
+    taa::scenes::SceneFrame rendered = scene->render(frame, settings);
+    if (writing.valid()) writing.get();
+    writing = std::async(std::launch::async, [&, rendered = std::move(rendered)] {
+      taa::scenes::writeFrame(rendered, scene->name(), args.layout, args.outDir);
+    });
   }
+  if (writing.valid()) writing.get();
   const std::chrono::duration<double> seconds = std::chrono::steady_clock::now() - start;
   std::printf("taa-scenegen: %s, frames %d-%d, %dx%d -> %s (%.2f s)\n", scene->name().c_str(),
               args.firstFrame, args.lastFrame, args.width, args.height, args.outDir.c_str(),

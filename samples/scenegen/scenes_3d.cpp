@@ -79,9 +79,11 @@ RaySceneSpec wires() {
   const glm::vec3 metal(0.06f, 0.06f, 0.07f);
   s.objects.push_back({rectangle(), fixed(translation(0.0, 0.0, -40.0)), {},
                        [](const SurfacePoint& p) {
-                         const double v = 0.1 * std::sin(0.35 * p.local.x) *
-                                          std::sin(0.5 * p.local.y);
-                         return glm::vec3(float(1.1 + v), float(1.05 + v), 0.95f);
+                         // Float sines (as below and in daySky): half the time of double
+                         // ones, and exact enough for a faint modulation.
+                         const float v = 0.1f * std::sin(float(0.35 * p.local.x)) *
+                                         std::sin(float(0.5 * p.local.y));
+                         return glm::vec3(1.1f + v, 1.05f + v, 0.95f);
                        }});
   s.objects.push_back({rectangle(6.0, 1.25), fixed(translation(0.0, 1.25, -8.0)),
                        [](glm::dvec3 l) { return chainLink({l.x, l.y}, 0.2, 0.012); },
@@ -97,8 +99,8 @@ RaySceneSpec wires() {
                          matte(glm::vec3(0.02f))});
   }
   s.objects.push_back({rectangle(), fixed(floorAt(0.0)), {}, [](const SurfacePoint& p) {
-                         const float v = float(0.05 * std::sin(3.0 * p.local.x) *
-                                               std::sin(2.3 * p.local.y));
+                         const float v = 0.05f * std::sin(float(3.0 * p.local.x)) *
+                                         std::sin(float(2.3 * p.local.y));
                          return lambert(glm::vec3(0.25f + v, 0.3f + v, 0.18f), p.worldNormal);
                        }});
   return s;
@@ -194,13 +196,16 @@ RaySceneSpec hdrHighlights() {
                          glm::vec3 c(0.015f, 0.018f, 0.025f);
                          // A grid of lights, each with its own brightness and size.
                          const glm::dvec2 cell(std::floor(q.x / 0.9), std::floor(q.y / 0.7));
-                         const double id = periodFraction(std::sin(cell.x * 12.99 + cell.y *
-                                                                   78.23) * 43758.5, 1.0);
                          const glm::dvec2 centre((cell.x + 0.5) * 0.9, (cell.y + 0.5) * 0.7);
-                         const double radius = 0.03 + 0.05 * id;
-                         const double peak = 10.0 * std::pow(100.0, id);
-                         const double bump = smoothBump(glm::length(q - centre), radius);
-                         c += glm::vec3(1.0f, 0.85f, 0.6f) * float(peak * bump);
+                         const double distance = glm::length(q - centre);
+                         if (distance < 0.08) {  // every radius is less: beyond, skip the hash
+                           const double id = periodFraction(
+                               std::sin(cell.x * 12.99 + cell.y * 78.23) * 43758.5, 1.0);
+                           const double radius = 0.03 + 0.05 * id;
+                           const double peak = 10.0 * std::pow(100.0, id);
+                           const double bump = smoothBump(distance, radius);
+                           c += glm::vec3(1.0f, 0.85f, 0.6f) * float(peak * bump);
+                         }
                          // Neon strips with a smooth cross-section.
                          const double band = smoothBump(
                              std::fabs(periodFraction(q.y, 1.6) - 0.5) * 1.6, 0.03);
@@ -209,7 +214,8 @@ RaySceneSpec hdrHighlights() {
                        }});
   s.objects.push_back({sphere(0.5), fixed(translation(-0.8, 1.2, -5.0)), {},
                        [](const SurfacePoint& p) {
-                         const glm::dvec3 light = glm::normalize(glm::dvec3(-0.3, 0.6, 0.7));
+                         static const glm::dvec3 light =
+                             glm::normalize(glm::dvec3(-0.3, 0.6, 0.7));
                          const glm::dvec3 toEye = glm::normalize(p.cameraPosition - p.world);
                          const glm::dvec3 half = glm::normalize(light + toEye);
                          const double spec = std::pow(std::max(0.0, glm::dot(p.worldNormal,
@@ -230,7 +236,7 @@ RaySceneSpec skyPan() {
     // Thin bright contrails and a fine dark lattice of cirrus lines in angle space.
     if (periodFraction(azimuth + 0.5 * elevation, 7.3) < 0.03) c = glm::vec3(1.6f);
     if (periodFraction(elevation, 1.7) < 0.12) c *= 0.7f;
-    const glm::dvec3 sun = glm::normalize(glm::dvec3(0.3, 0.25, -1.0));
+    static const glm::dvec3 sun = glm::normalize(glm::dvec3(0.3, 0.25, -1.0));
     c += glm::vec3(30.0f, 27.0f, 20.0f) * float(smoothBump(glm::length(d - sun), 0.02));
     return c;
   };

@@ -7,16 +7,6 @@
 
 namespace taa::scenes {
 
-double periodFraction(double x, double period) {
-  const double t = x / period;
-  return t - std::floor(t);
-}
-
-glm::vec3 checker(glm::dvec2 p, double cell, glm::vec3 a, glm::vec3 b) {
-  const long long k = (long long)(std::floor(p.x / cell)) + (long long)(std::floor(p.y / cell));
-  return (k & 1) ? b : a;
-}
-
 glm::vec3 bricks(glm::dvec2 p, double w, double h, double mortar, glm::vec3 brick,
                  glm::vec3 joint) {
   const double row = std::floor(p.y / h);
@@ -35,14 +25,8 @@ bool chainLink(glm::dvec2 p, double spacing, double width) {
   return u < width || v < width;
 }
 
-double smoothBump(double r, double radius) {
-  if (r >= radius) return 0.0;
-  const double q = 1.0 - (r / radius) * (r / radius);
-  return q * q;
-}
-
 glm::vec3 lambert(glm::vec3 albedo, glm::dvec3 normal) {
-  const glm::dvec3 sun = glm::normalize(glm::dvec3(0.45, 0.8, 0.4));
+  static const glm::dvec3 sun = glm::normalize(glm::dvec3(0.45, 0.8, 0.4));
   const double cosine = std::max(0.0, glm::dot(normal, sun));
   return albedo * float(0.3 + 0.9 * cosine);
 }
@@ -56,7 +40,7 @@ glm::vec3 daySky(glm::dvec3 d) {
   const double up = std::clamp(d.y, -1.0, 1.0);
   const glm::vec3 horizon(0.9f, 0.95f, 1.05f), zenith(0.25f, 0.45f, 0.9f);
   const float t = float(std::sqrt(std::max(0.0, up)));
-  const float clouds = float(0.08 * std::sin(7.0 * d.x + 3.0 * d.z) * std::sin(11.0 * up));
+  const float clouds = 0.08f * std::sin(float(7.0 * d.x + 3.0 * d.z)) * std::sin(float(11.0 * up));
   return horizon + (zenith - horizon) * t + glm::vec3(clouds);
 }
 

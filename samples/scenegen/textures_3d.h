@@ -3,16 +3,26 @@
 // millions of samples per pixel).
 #pragma once
 
+#include <cmath>
+
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 namespace taa::scenes {
 
+// periodFraction, checker and smoothBump are inline: the truth evaluates them for every sample.
+
 // Fraction of x's period `period` at which x lies, in [0, 1).
-double periodFraction(double x, double period);
+inline double periodFraction(double x, double period) {
+  const double t = x / period;
+  return t - std::floor(t);
+}
 
 // Checker of square cells of side `cell`: a on even cells, b on odd ones.
-glm::vec3 checker(glm::dvec2 p, double cell, glm::vec3 a, glm::vec3 b);
+inline glm::vec3 checker(glm::dvec2 p, double cell, glm::vec3 a, glm::vec3 b) {
+  const long long k = (long long)(std::floor(p.x / cell)) + (long long)(std::floor(p.y / cell));
+  return (k & 1) ? b : a;
+}
 
 // Running-bond bricks (w x h) with mortar joints of width `mortar`.
 glm::vec3 bricks(glm::dvec2 p, double w, double h, double mortar, glm::vec3 brick,
@@ -22,7 +32,11 @@ glm::vec3 bricks(glm::dvec2 p, double w, double h, double mortar, glm::vec3 bric
 bool chainLink(glm::dvec2 p, double spacing, double width);
 
 // A smooth bump: 1 at r = 0 falling to 0 at r = radius, (1 - (r/R)^2)^2, C1 at the rim.
-double smoothBump(double r, double radius);
+inline double smoothBump(double r, double radius) {
+  if (r >= radius) return 0.0;
+  const double q = 1.0 - (r / radius) * (r / radius);
+  return q * q;
+}
 
 // Diffuse lighting under the scenes' one sun and sky: albedo * (ambient + sun * cos).
 glm::vec3 lambert(glm::vec3 albedo, glm::dvec3 normal);

@@ -7,6 +7,7 @@
 #include "scene_test_util.h"
 #include "scenegen/patterns.h"
 #include "scenegen/scene_library.h"
+#include "scenegen/scenes_3d.h"
 
 namespace taa::scenes::test {
 namespace {
@@ -45,6 +46,26 @@ TEST(SceneTruth, ConvergesWithMoreSamples) {
     magnitude += std::fabs(b.truth.pixels[k]);
   }
   EXPECT_LT(sum / magnitude, 0.01);
+}
+
+// The 3D truth's cells lie on one grid over the whole frame: any region, on any number of
+// threads, has exactly the whole frame's pixels (so checks on a region hold for the files).
+TEST(SceneTruth, RegionOf3dFrameIsThatFramesPixels) {
+  const auto scene = makeScene3d("wires", 64, 36);
+  RenderSettings settings;
+  settings.truthSamplesPerAxis = 4;
+  settings.threads = 3;
+  const SceneFrame whole = scene->render(7, settings);
+  settings.threads = 1;
+  const int x0 = 13, y0 = 5;
+  const Image region = scene->truthRegion(7, settings, x0, y0, 21, 11);
+  for (int j = 0; j < region.height; ++j) {
+    for (int i = 0; i < region.width; ++i) {
+      for (int c = 0; c < 4; ++c) {
+        ASSERT_EQ(region.at(i, j)[c], whole.truth.at(x0 + i, y0 + j)[c]) << i << ", " << j;
+      }
+    }
+  }
 }
 
 // Where nothing is hit: depth +inf, zero motion and alpha 0; truth alpha is the coverage.
