@@ -416,7 +416,8 @@ taa:options, the resolve options used):
   --out-ch R,G,B,A         output color channel names (default: the color input's names)
   --passthrough PATTERNS   copy channels of the color file (part) whose names match these
                            comma-separated globs untouched into the output: 'ViewLayer.*,*.Z'
-  --compression NAME       none, rle, zips, zip, piz, pxr24, b44, b44a, dwaa, dwab (default zip)
+  --compression NAME       none, rle, zips, zip, piz, pxr24, b44, b44a, dwaa, dwab (default zip);
+                           zip and zips are zlib level 1 (fast), zip:N picks level N (1-9)
 
 GL and diagnostics:
   --gl auto|egl|osmesa     OpenGL back end (default auto: EGL, falling back to OSMesa)
