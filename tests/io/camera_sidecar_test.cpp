@@ -14,6 +14,8 @@
 namespace taa::io {
 namespace {
 
+using taa::test::contains;
+using taa::test::errorOf;
 using taa::test::scratchFolder;
 using taa::test::writeTextFile;
 
@@ -25,20 +27,6 @@ std::string numbers(const glm::dmat4& m) {
     }
   }
   return text + "]";
-}
-
-Error errorOf(const std::function<void()>& run) {
-  try {
-    run();
-  } catch (const Error& error) {
-    return error;
-  }
-  ADD_FAILURE() << "expected a taa::Error";
-  return Error("no error");
-}
-
-bool contains(const std::string& text, const std::string& part) {
-  return text.find(part) != std::string::npos;
 }
 
 TEST(CameraSidecar, OpenGlMatricesBecomeAPlusZForwardCameraAndJitterIsKept) {

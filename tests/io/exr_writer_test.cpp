@@ -19,23 +19,11 @@ namespace fs = std::filesystem;
 using taa::test::listFolder;
 using taa::test::makeSpec;
 using taa::test::readImage;
+using taa::test::contains;
+using taa::test::errorOf;
 using taa::test::scratchFolder;
 
 using Names = std::vector<std::string>;
-
-bool contains(const std::string& text, const std::string& part) {
-  return text.find(part) != std::string::npos;
-}
-
-Error expectError(const std::function<void()>& run) {
-  try {
-    run();
-  } catch (const Error& error) {
-    return error;
-  }
-  ADD_FAILURE() << "expected a taa::Error";
-  return Error("no error");
-}
 
 // A Cycles-like header: data window 5x3 at (4, 5) inside a 16x12 display window at (1, 2),
 // five channels, piz, render metadata.
@@ -86,7 +74,7 @@ TEST(ParsePixelType, HalfAndFloat) {
   EXPECT_EQ(parsePixelType("half"), PixelType::Half);
   EXPECT_EQ(parsePixelType("float"), PixelType::Float);
   for (const std::string text : {"", "double", "uint8", "Half "}) {
-    EXPECT_TRUE(contains(expectError([&] { parsePixelType(text); }).what(), "\"" + text + "\""));
+    EXPECT_TRUE(contains(errorOf([&] { parsePixelType(text); }).what(), "\"" + text + "\""));
   }
 }
 
@@ -100,7 +88,7 @@ TEST(ValidateCompression, AcceptsOpenExrCompressions) {
 TEST(ValidateCompression, RejectsUnknownNamesAndBadLevels) {
   for (const std::string name : {"", "lzw", "ZIP", "zip:", "zip:fast", "piz:3", "dwaa:-1",
                                  "jpeg", "zip 9"}) {
-    const Error error = expectError([&] { validateCompression(name); });
+    const Error error = errorOf([&] { validateCompression(name); });
     EXPECT_TRUE(contains(error.what(), "\"" + name + "\"")) << error.what();
   }
 }
@@ -263,7 +251,7 @@ TEST(WriteExrAtomic, CreatesAMissingParentFolder) {
 TEST(WriteExrAtomic, UnknownCompressionWritesNothing) {
   const std::string folder = scratchFolder();
   const std::string path = folder + "/out.exr";
-  const Error error = expectError([&] {
+  const Error error = errorOf([&] {
     writeExrAtomic(path, makeRgba(5, 3, [](int, int) { return 0.5f; }), cyclesLikeTemplate(),
                    {PixelType::Half, "lzma"});
   });
@@ -276,7 +264,7 @@ TEST(WriteExrAtomic, ParentThatIsAFileFailsAndLeavesNothing) {
   const std::string folder = scratchFolder();
   taa::test::writeTextFile(folder + "/blocker", "a file, not a folder");
   const std::string path = folder + "/blocker/out.exr";
-  const Error error = expectError([&] {
+  const Error error = errorOf([&] {
     writeExrAtomic(path, makeRgba(5, 3, [](int, int) { return 0.5f; }), cyclesLikeTemplate(), {});
   });
   EXPECT_EQ(error.context().file, path);
@@ -289,7 +277,7 @@ TEST(WriteExrAtomic, FailedRenameRemovesTheTemporaryFile) {
   // A non-empty folder sits at the final path: the EXR is written, the rename must fail.
   const std::string path = folder + "/out.exr";
   fs::create_directories(path + "/inside");
-  const Error error = expectError([&] {
+  const Error error = errorOf([&] {
     writeExrAtomic(path, makeRgba(5, 3, [](int, int) { return 0.5f; }), cyclesLikeTemplate(), {});
   });
   EXPECT_EQ(error.context().file, path);
@@ -304,7 +292,7 @@ TEST(WriteExrAtomic, FailedWriteKeepsTheExistingFile) {
   const Image original = makeRgba(5, 3, [](int, int) { return 1.0f; });
   writeExrAtomic(path, original, cyclesLikeTemplate(), {PixelType::Float, "zip"});
   // An image that does not match the template's data window must not touch the file.
-  expectError([&] {
+  errorOf([&] {
     writeExrAtomic(path, makeRgba(4, 3, [](int, int) { return 2.0f; }), cyclesLikeTemplate(),
                    {PixelType::Float, "zip"});
   });
@@ -315,7 +303,7 @@ TEST(WriteExrAtomic, FailedWriteKeepsTheExistingFile) {
 
 TEST(WriteExrAtomic, SizeMismatchStatesBothSizes) {
   const std::string folder = scratchFolder();
-  const Error error = expectError([&] {
+  const Error error = errorOf([&] {
     writeExrAtomic(folder + "/o.exr", makeRgba(4, 3, [](int, int) { return 0.0f; }),
                    cyclesLikeTemplate(), {});
   });

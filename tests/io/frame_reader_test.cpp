@@ -14,6 +14,8 @@ namespace taa::io {
 namespace {
 
 using taa::test::makeSpec;
+using taa::test::contains;
+using taa::test::errorOf;
 using taa::test::scratchFolder;
 using taa::test::writeImage;
 
@@ -22,21 +24,7 @@ using Names = std::vector<std::string>;
 constexpr float kInf = std::numeric_limits<float>::infinity();
 constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
 
-bool contains(const std::string& text, const std::string& part) {
-  return text.find(part) != std::string::npos;
-}
-
 // Runs `read`, expecting a taa::Error; returns it for inspection.
-Error expectError(const std::function<void()>& read) {
-  try {
-    read();
-  } catch (const Error& error) {
-    return error;
-  }
-  ADD_FAILURE() << "expected a taa::Error";
-  return Error("no error");
-}
-
 // Writes a 4x3 float EXR whose channel c of pixel p holds value(p, c).
 void writeTestExr(const std::string& path, const std::vector<std::string>& channels,
                   const std::function<float(int, int)>& value, int width = 4, int height = 3) {
@@ -320,7 +308,7 @@ TEST(ReadFrame, KeepsTheColorHeader) {
 TEST(ReadFrameErrors, MissingColorFrameNamesPathAndFrame) {
   const std::string folder = scratchFolder();
   writeSeparateFiles(folder, 1);
-  const Error error = expectError([&] { readFrame(separateFilesLayout(folder), 12); });
+  const Error error = errorOf([&] { readFrame(separateFilesLayout(folder), 12); });
   EXPECT_EQ(error.context().file, folder + "/beauty.0012.exr");
   EXPECT_EQ(error.context().frame, 12);
   EXPECT_TRUE(contains(error.what(), folder + "/beauty.0012.exr")) << error.what();
@@ -331,7 +319,7 @@ TEST(ReadFrameErrors, MissingDepthFrameNamesItsPath) {
   const std::string folder = scratchFolder();
   writeSeparateFiles(folder, 4);
   std::filesystem::remove(folder + "/depth.0004.exr");
-  const Error error = expectError([&] { readFrame(separateFilesLayout(folder), 4); });
+  const Error error = errorOf([&] { readFrame(separateFilesLayout(folder), 4); });
   EXPECT_EQ(error.context().file, folder + "/depth.0004.exr");
   EXPECT_TRUE(contains(error.what(), "depth")) << error.what();
   EXPECT_TRUE(contains(error.what(), "frame 4")) << error.what();
@@ -343,7 +331,7 @@ TEST(ReadFrameErrors, MissingChannelListsMissingAndAvailableNames) {
                                              "ViewLayer.Combined.B", "ViewLayer.Combined.A",
                                              "ViewLayer.Depth.Z"},
                [](int, int) { return 1.0f; });
-  const Error error = expectError([&] { readFrame(cyclesLayout(folder + "/render.####.exr"), 1); });
+  const Error error = errorOf([&] { readFrame(cyclesLayout(folder + "/render.####.exr"), 1); });
   const std::string message = error.what();
   EXPECT_TRUE(contains(message, "ViewLayer.Vector.X, ViewLayer.Vector.Y")) << message;
   EXPECT_TRUE(contains(message, "ViewLayer.Combined.R")) << message;
@@ -356,7 +344,7 @@ TEST(ReadFrameErrors, MissingChannelListsMissingAndAvailableNames) {
 TEST(ReadFrameErrors, DepthSizeDifferentFromColorStatesBothSizes) {
   const std::string folder = scratchFolder();
   writeSeparateFiles(folder, 2, /*depthWidth=*/3);
-  const Error error = expectError([&] { readFrame(separateFilesLayout(folder), 2); });
+  const Error error = errorOf([&] { readFrame(separateFilesLayout(folder), 2); });
   const std::string message = error.what();
   EXPECT_TRUE(contains(message, "3x3")) << message;
   EXPECT_TRUE(contains(message, "4x3")) << message;
@@ -367,7 +355,7 @@ TEST(ReadFrameErrors, DepthSizeDifferentFromColorStatesBothSizes) {
 TEST(ReadFrameErrors, MotionSizeDifferentFromColorStatesBothSizes) {
   const std::string folder = scratchFolder();
   writeSeparateFiles(folder, 2, 4, /*motionHeight=*/5);
-  const Error error = expectError([&] { readFrame(separateFilesLayout(folder), 2); });
+  const Error error = errorOf([&] { readFrame(separateFilesLayout(folder), 2); });
   const std::string message = error.what();
   EXPECT_TRUE(contains(message, "4x5")) << message;
   EXPECT_TRUE(contains(message, "4x3")) << message;
@@ -381,7 +369,7 @@ TEST(ReadFrameErrors, MotionWindowOriginDifferentFromColorIsAnError) {
   OIIO::ImageSpec shifted = makeSpec(4, 3, {"u", "v"});
   shifted.x = 1;
   writeImage(folder + "/mv.0002.exr", shifted, std::vector<float>(4 * 3 * 2, 0.0f));
-  const Error error = expectError([&] { readFrame(separateFilesLayout(folder), 2); });
+  const Error error = errorOf([&] { readFrame(separateFilesLayout(folder), 2); });
   EXPECT_TRUE(contains(error.what(), "4x3 at (1, 0)")) << error.what();
   EXPECT_TRUE(contains(error.what(), "4x3 at (0, 0)")) << error.what();
 }
@@ -391,7 +379,7 @@ TEST(ReadFrameErrors, TextFileNamedExrIsRejected) {
   taa::test::writeTextFile(folder + "/c.exr", "this is not an image\n");
   AovLayout layout;
   layout.color = {folder + "/c.exr", {"R", "G", "B"}};
-  const Error error = expectError([&] { readFrame(layout, 1); });
+  const Error error = errorOf([&] { readFrame(layout, 1); });
   EXPECT_EQ(error.context().file, folder + "/c.exr");
   EXPECT_TRUE(contains(error.what(), "OpenEXR")) << error.what();
 }
@@ -408,12 +396,12 @@ TEST(ReadFrameErrors, TruncatedExrIsRejected) {
   layout.color = {path, {"R", "G", "B", "A"}};
   // Cut in the pixel data (OIIO opens it, the read fails) and in the header (open fails).
   std::filesystem::resize_file(path, size / 2);
-  Error error = expectError([&] { readFrame(layout, 1); });
+  Error error = errorOf([&] { readFrame(layout, 1); });
   EXPECT_EQ(error.context().file, path);
   EXPECT_EQ(error.context().frame, 1);
   EXPECT_TRUE(contains(error.what(), "pixels")) << error.what();
   std::filesystem::resize_file(path, 20);
-  error = expectError([&] { readFrame(layout, 1); });
+  error = errorOf([&] { readFrame(layout, 1); });
   EXPECT_EQ(error.context().file, path);
 }
 
@@ -423,7 +411,7 @@ TEST(ReadFrameErrors, PngAsColorIsRejected) {
   writeImage(folder + "/c.png", spec, std::vector<float>(4 * 3 * 3, 0.5f));
   AovLayout layout;
   layout.color = {folder + "/c.png", {"R", "G", "B"}};
-  const Error error = expectError([&] { readFrame(layout, 1); });
+  const Error error = errorOf([&] { readFrame(layout, 1); });
   EXPECT_EQ(error.context().file, folder + "/c.png");
   EXPECT_TRUE(contains(error.what(), "not an OpenEXR file")) << error.what();
   EXPECT_TRUE(contains(error.what(), "png")) << error.what();
@@ -436,7 +424,7 @@ TEST(ReadFrameErrors, PngNamedExrIsRejected) {
   std::filesystem::rename(folder + "/c.png", folder + "/c.exr");
   AovLayout layout;
   layout.color = {folder + "/c.exr", {"R", "G", "B"}};
-  const Error error = expectError([&] { readFrame(layout, 1); });
+  const Error error = errorOf([&] { readFrame(layout, 1); });
   EXPECT_EQ(error.context().file, folder + "/c.exr");
 }
 
@@ -445,11 +433,11 @@ TEST(ReadFrameErrors, WrongChannelCountIsAnError) {
   writeSeparateFiles(folder, 1);
   AovLayout layout = separateFilesLayout(folder);
   layout.motion->channels = {"u"};
-  const Error error = expectError([&] { readFrame(layout, 1); });
+  const Error error = errorOf([&] { readFrame(layout, 1); });
   EXPECT_TRUE(contains(error.what(), "motion")) << error.what();
   layout = separateFilesLayout(folder);
   layout.color.channels = {"R", "G"};
-  EXPECT_TRUE(contains(expectError([&] { readFrame(layout, 1); }).what(), "color"));
+  EXPECT_TRUE(contains(errorOf([&] { readFrame(layout, 1); }).what(), "color"));
 }
 
 }  // namespace

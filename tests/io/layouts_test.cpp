@@ -16,6 +16,8 @@ namespace taa::io {
 namespace {
 
 using taa::test::makeSpec;
+using taa::test::contains;
+using taa::test::errorOf;
 using taa::test::scratchFolder;
 using taa::test::writeImage;
 
@@ -46,20 +48,6 @@ void writeMultiPart(const std::string& path, std::vector<OIIO::ImageSpec> parts)
     ASSERT_TRUE(out->write_image(OIIO::TypeFloat, pixels.data())) << out->geterror();
   }
   ASSERT_TRUE(out->close());
-}
-
-Error errorOf(const std::function<void()>& run) {
-  try {
-    run();
-  } catch (const Error& error) {
-    return error;
-  }
-  ADD_FAILURE() << "expected a taa::Error";
-  return Error("no error");
-}
-
-bool contains(const std::string& text, const std::string& part) {
-  return text.find(part) != std::string::npos;
 }
 
 TEST(MultiPart, PartsChosenByNameOrFoundByChannel) {

@@ -66,4 +66,18 @@ std::vector<std::string> listFolder(const std::string& folder) {
   return names;
 }
 
+bool contains(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
+
+Error errorOf(const std::function<void()>& run) {
+  try {
+    run();
+  } catch (const Error& error) {
+    return error;
+  }
+  ADD_FAILURE() << "expected a taa::Error";
+  return Error("no error");
+}
+
 }  // namespace taa::test

@@ -3,8 +3,11 @@
 
 #include <OpenImageIO/imageio.h>
 
+#include <functional>
 #include <string>
 #include <vector>
+
+#include "taa/error.h"
 
 namespace taa::test {
 
@@ -27,5 +30,11 @@ void writeTextFile(const std::string& path, const std::string& text);
 
 // Names in `folder` (not recursive), sorted.
 std::vector<std::string> listFolder(const std::string& folder);
+
+// True when `part` occurs in `text` (error-message checks).
+bool contains(const std::string& text, const std::string& part);
+
+// The taa::Error that `run` throws; a test failure (and an empty error) when it throws none.
+Error errorOf(const std::function<void()>& run);
 
 }  // namespace taa::test
