@@ -173,16 +173,16 @@ bool depthAgrees(float expected, float found, float tolerance) {
 PreviousDepth comparePreviousDepth(vec2 position, float expected, float tolerance) {
   ivec2 maxPixel = textureSize(uPreviousDepth, 0) - 1;
   ivec2 centre = clamp(ivec2(floor(position)), ivec2(0), maxPixel);
-  float closest = 1.0 / 0.0, farthest = 0.0;
+  float closest = 1.0 / 0.0, farthest = 0.0, nearest = 0.0;
   for (int dy = -1; dy <= 1; ++dy) {
     for (int dx = -1; dx <= 1; ++dx) {
       ivec2 q = clamp(centre + ivec2(dx, dy), ivec2(0), maxPixel);
       float d = texelFetch(uPreviousDepth, q, 0).r;
       closest = min(closest, d);
       farthest = max(farthest, d);
+      if (dx == 0 && dy == 0) nearest = d;  // the texel history mostly comes from
     }
   }
-  float nearest = texelFetch(uPreviousDepth, centre, 0).r;
   PreviousDepth result;
   // Hidden only if every texel around was nearer: a sub-pixel wire seen by one of last frame's
   // centre samples must not reject the backdrop beside it (docs/TUNING.md: the 3x3 closest depth
