@@ -7,16 +7,12 @@
 // inserted ahead of this file. The output colour space conversion happens in output.frag.
 
 #include "color_space.glsl"
-#include "reconstruction.glsl"
 #include "history_sampling.glsl"
 #include "history_rectify.glsl"
 #include "camera_reprojection.glsl"
 #include "blend_weights.glsl"
 
 // Variants, set by the resolver as #define lines (defaults here document the choices).
-#ifndef RECONSTRUCTION
-#define RECONSTRUCTION 1  // 0 centre sample only, 1 Blackman-Harris, 2 Lanczos-2
-#endif
 #ifndef MOTION_DILATION
 #define MOTION_DILATION 2  // motion from: 0 the pixel, 1 closest depth of 5 (plus), 2 of 9 (3x3)
 #endif
@@ -48,7 +44,8 @@ uniform sampler2D uHistoryState;   // R, nearest: previous per-pixel sample coun
 uniform sampler2D uMotion;         // RG, nearest: pixels, y down, to the previous frame
 uniform sampler2D uDepth;          // R, nearest: planar depth, +inf = no hit
 uniform sampler2D uPreviousDepth;  // R, nearest: the previous frame's depth
-uniform vec2 uJitter;              // this frame's sample offset, pixels, y down
+uniform float uReconstruction[9];  // 3x3 unjitter weights, row-major, summing to 1: the filter
+                                   // of this frame's jitter (resolve/reconstruction_filter.h)
 uniform bool uHasHistory;
 uniform bool uHasMotion;
 uniform bool uHasDepth;
@@ -82,16 +79,6 @@ vec3 fromBoxSpace(vec3 c) {
   return yCoCgToRgb(c);
 #else
   return c;
-#endif
-}
-
-float reconstructionWeight(vec2 offset) {
-#if RECONSTRUCTION == 0
-  return dot(offset - uJitter, offset - uJitter) < 1e-12 ? 1.0 : 0.0;
-#elif RECONSTRUCTION == 1
-  return blackmanHarrisWeight(offset);
-#else
-  return lanczos2Weight(offset);
 #endif
 }
 
@@ -209,10 +196,8 @@ void main() {
   vec2 size = vec2(textureSize(uCurrent, 0));
   ivec2 maxPixel = ivec2(size) - 1;
 
-  // Unjitter, and gather the neighbourhood's colour box. Neighbour q's sample sits at
-  // (q - pixel) + jitter from this pixel's centre.
+  // Unjitter, and gather the neighbourhood's colour box.
   vec4 filtered = vec4(0.0);
-  float weightSum = 0.0;
   vec3 boxMin = vec3(1e30), boxMax = vec3(-1e30);
   vec3 boxSum = vec3(0.0), boxSumOfSquares = vec3(0.0);
   float boxCount = 0.0;
@@ -221,9 +206,7 @@ void main() {
     for (int dx = -1; dx <= 1; ++dx) {
       ivec2 q = clamp(pixel + ivec2(dx, dy), ivec2(0), maxPixel);
       vec4 sampleColor = taaToWorking(texelFetch(uCurrent, q, 0));
-      float weight = reconstructionWeight(vec2(dx, dy) + uJitter);
-      filtered += weight * sampleColor;
-      weightSum += weight;
+      filtered += uReconstruction[3 * (dy + 1) + dx + 1] * sampleColor;
       if (inColourBox(dx, dy)) {
         vec3 c = toBoxSpace(sampleColor.rgb);
         boxMin = min(boxMin, c);
@@ -236,9 +219,6 @@ void main() {
       }
     }
   }
-  // Lanczos lobes can cancel out; fall back to the centre sample then.
-  filtered = abs(weightSum) > 1e-4 ? filtered / weightSum
-                                   : taaToWorking(texelFetch(uCurrent, pixel, 0));
   vec3 filteredBox = toBoxSpace(filtered.rgb);
   filtered.a = clamp(filtered.a, alphaMin, alphaMax);
 

@@ -54,7 +54,7 @@ enum class Neighbourhood { Plus5, Box9 };
 // quality yardstick (docs/QUALITY.md), not by eye.
 struct ResolveOptions {
   // --- unjitter
-  // [program] Filter reconstructing the current frame at pixel centres from the 3x3 jittered
+  // Filter reconstructing the current frame at pixel centres from the 3x3 jittered
   // samples: Centre (the pixel's own sample, no filter), BlackmanHarris (soft, no ringing),
   // Lanczos2 (sharper, small negative lobes).
   Reconstruction reconstruction = Reconstruction::Lanczos2;

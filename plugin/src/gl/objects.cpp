@@ -295,6 +295,11 @@ void Program::setMatrix4(const char* name, const float* columnMajor16) const {
   if (at >= 0) handle_.gl().ProgramUniformMatrix4fv(handle_.id(), at, 1, GL_FALSE, columnMajor16);
 }
 
+void Program::setArray(const char* name, const float* values, int count) const {
+  const GLint at = location(name);
+  if (at >= 0) handle_.gl().ProgramUniform1fv(handle_.id(), at, count, values);
+}
+
 // --- FullscreenTriangle ------------------------------------------------------------------
 
 FullscreenTriangle::FullscreenTriangle(const Functions& gl) {

@@ -141,6 +141,7 @@ class Program {
   void set(const char* name, float x, float y) const;
   void set(const char* name, float x, float y, float z, float w) const;
   void setMatrix4(const char* name, const float* columnMajor16) const;
+  void setArray(const char* name, const float* values, int count) const;  // float name[count]
 
   GLuint id() const { return handle_.id(); }
 

@@ -1,5 +1,6 @@
 #include "resolve/resolver.h"
 
+#include <array>
 #include <optional>
 #include <string>
 #include <utility>
@@ -8,6 +9,7 @@
 #include "color/ocio_bracket.h"
 #include "color/ocio_gpu_resources.h"
 #include "gl/objects.h"
+#include "resolve/reconstruction_filter.h"
 #include "taa/error.h"
 
 namespace taa {
@@ -34,8 +36,7 @@ std::string define(const char* name, int value) {
 }
 
 std::vector<std::string> resolveDefines(const ResolveOptions& o) {
-  return {define("RECONSTRUCTION", int(o.reconstruction)),
-          define("MOTION_DILATION", int(o.motionDilation)),
+  return {define("MOTION_DILATION", int(o.motionDilation)),
           define("CAMERA_MOTION", int(o.cameraMotion)),
           define("HISTORY_FILTER", int(o.historyFilter)),
           define("RECTIFY", int(o.rectify)),
@@ -202,7 +203,9 @@ struct Resolver::Impl {
     p.set("uMotion", int(kMotionUnit));
     p.set("uDepth", int(kDepthUnit));
     p.set("uPreviousDepth", int(kPreviousDepthUnit));
-    p.set("uJitter", input.jitter.x, input.jitter.y);
+    const std::array<float, 9> weights =
+        reconstructionWeights(options.reconstruction, input.jitter);
+    p.setArray("uReconstruction", weights.data(), int(weights.size()));
     p.set("uHasMotion", input.motion ? 1 : 0);
     p.set("uHasDepth", input.depth ? 1 : 0);
     p.set("uHasPreviousDepth", hasPreviousDepth ? 1 : 0);
