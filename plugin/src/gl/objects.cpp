@@ -1,5 +1,6 @@
 #include "gl/objects.h"
 
+#include <algorithm>
 #include <cstdio>
 
 #include "gl/shader_expansion.h"
@@ -170,15 +171,21 @@ Framebuffer::Framebuffer(const Functions& gl, const Texture& colorAttachment)
     : Framebuffer(gl, std::vector<const Texture*>{&colorAttachment}) {}
 
 Framebuffer::Framebuffer(const Functions& gl, const std::vector<const Texture*>& colorAttachments) {
-  if (colorAttachments.empty()) throw Error("framebuffer: no colour attachment given");
-  width_ = colorAttachments.front()->width();
-  height_ = colorAttachments.front()->height();
+  const auto first = std::find_if(colorAttachments.begin(), colorAttachments.end(),
+                                  [](const Texture* texture) { return texture != nullptr; });
+  if (first == colorAttachments.end()) throw Error("framebuffer: no colour attachment given");
+  width_ = (*first)->width();
+  height_ = (*first)->height();
   GLuint id = 0;
   gl.GenFramebuffers(1, &id);
   handle_ = Handle<FramebufferDeleter>(&gl, id);
   gl.BindFramebuffer(GL_FRAMEBUFFER, id);
   std::vector<GLenum> drawBuffers;
   for (const Texture* texture : colorAttachments) {
+    if (!texture) {  // nothing at this location: the shader's output there is dropped
+      drawBuffers.push_back(GL_NONE);
+      continue;
+    }
     if (!texture->id()) throw Error("framebuffer: a colour texture was never created");
     if (texture->width() != width_ || texture->height() != height_) {
       throw Error("framebuffer: colour attachments differ in size");

@@ -89,6 +89,8 @@ class Framebuffer {
  public:
   Framebuffer() = default;
   Framebuffer(const Functions& gl, const Texture& colorAttachment);
+  // Attachment i receives the fragment shader's output at location i; a null entry leaves that
+  // location unattached (its output is dropped).
   Framebuffer(const Functions& gl, const std::vector<const Texture*>& colorAttachments);
 
   // Binds for drawing and sets the viewport to the attachments' size.

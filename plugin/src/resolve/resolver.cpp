@@ -15,8 +15,8 @@
 namespace taa {
 namespace {
 
-// Texture units of the resolve pass; OCIO's LUT textures follow. The output pass uses unit 0
-// for its input and the same first OCIO unit for the inverse bracket's LUTs.
+// Texture units of the resolve pass. The to-working and output passes use unit 0 for their input
+// and kFirstOcioUnit onwards for their bracket's LUTs.
 enum TextureUnit : int {
   kCurrentUnit = 0,
   kHistoryUnit,
@@ -29,14 +29,25 @@ enum TextureUnit : int {
 constexpr int kResolvedUnit = 0;
 
 // Attachments of the resolve pass (locations in resolve.frag).
-enum ResolveAttachment : int { kHistoryAttachment = 0, kStateAttachment, kDebugAttachment };
+enum ResolveAttachment : int {
+  kHistoryAttachment = 0,
+  kStateAttachment,
+  kDebugAttachment,
+  kOutputAttachment  // when the output pass is fused into the resolve pass
+};
 
 std::string define(const char* name, int value) {
   return std::string("#define ") + name + " " + std::to_string(value);
 }
 
+// Without sharpening, which needs the neighbours' results, the resolve pass writes the output
+// colour itself: a separate output pass would cost about 45 ms of CPU per 1080p frame on
+// llvmpipe, for one texel fetch.
+bool fusedOutput(const ResolveOptions& o) { return o.sharpen == 0.0f; }
+
 std::vector<std::string> resolveDefines(const ResolveOptions& o) {
-  return {define("MOTION_DILATION", int(o.motionDilation)),
+  return {define("FUSED_OUTPUT", fusedOutput(o) ? 1 : 0),
+          define("MOTION_DILATION", int(o.motionDilation)),
           define("CAMERA_MOTION", int(o.cameraMotion)),
           define("HISTORY_FILTER", int(o.historyFilter)),
           define("RECTIFY", int(o.rectify)),
@@ -103,20 +114,23 @@ struct Resolver::Impl {
 
   // Programs and the bracket's GL resources, rebuilt when programKey changes.
   std::string programKey;
-  gl::Program resolveProgram, outputProgram;
+  gl::Program toWorkingProgram, resolveProgram, outputProgram;
   color::OcioGpuResources toWorkingLuts, fromWorkingLuts;
 
   // Per-size resources, rebuilt when the frame size changes. Texture formats: the current
-  // colour in its input type (half sampled is exactly half widened); history, depth, motion
-  // and the output stay 32-bit float; sample counts (integers <= 1024) are exact in R16F.
+  // colour in its input type (half sampled is exactly half widened); its working-space copy,
+  // history, depth, motion and the output stay 32-bit float; sample counts (integers <= 1024)
+  // are exact in R16F.
   int width = 0, height = 0;
   SampleType currentType = SampleType::Float;
-  gl::Texture current, motion, debug, output;
+  gl::Texture current, currentWorking, motion, debug, output;
+  gl::Framebuffer toWorkingTarget;
   gl::Texture depth[2];         // this frame's and the previous frame's, alternating
   gl::Texture history[2];       // working space, alternating
   gl::Texture historyState[2];  // sample counts, alternating with history
   gl::Framebuffer resolveTarget[2];
-  bool hasDebugTarget = false;  // resolveTarget has the debug attachment
+  bool hasDebugTarget = false;       // resolveTarget has the debug attachment
+  bool hasOutputAttachment = false;  // resolveTarget writes the output (fusedOutput)
   gl::Framebuffer outputTarget;
   int latest = 0;        // index of the history holding the last result
   int latestDepth = 0;   // index of the depth texture holding the last frame's depth
@@ -142,19 +156,24 @@ struct Resolver::Impl {
     for (const auto& d : defines) key += d + "\n";
     key += bracket.cacheId();
     if (key == programKey) return;
-    defines.push_back(bracket.toWorking()->getShaderText());
+    gl::Program newToWorking(gl, gl::embeddedShaderSource("fullscreen.vert"),
+                             gl::embeddedShaderSource("to_working.frag",
+                                                      {bracket.toWorking()->getShaderText()}));
+    if (fusedOutput(newOptions)) defines.push_back(bracket.fromWorking()->getShaderText());
     gl::Program newResolve(gl, gl::embeddedShaderSource("fullscreen.vert"),
                            gl::embeddedShaderSource("resolve.frag", defines));
     gl::Program newOutput(gl, gl::embeddedShaderSource("fullscreen.vert"),
                           gl::embeddedShaderSource("output.frag",
                                                    {bracket.fromWorking()->getShaderText()}));
-    color::OcioGpuResources newToWorking(gl, bracket.toWorking(), kFirstOcioUnit);
+    color::OcioGpuResources newToWorkingLuts(gl, bracket.toWorking(), kFirstOcioUnit);
     color::OcioGpuResources newFromWorking(gl, bracket.fromWorking(), kFirstOcioUnit);
-    newToWorking.setUniforms(newResolve);
+    newToWorkingLuts.setUniforms(newToWorking);
     newFromWorking.setUniforms(newOutput);
+    if (fusedOutput(newOptions)) newFromWorking.setUniforms(newResolve);
+    toWorkingProgram = std::move(newToWorking);
     resolveProgram = std::move(newResolve);
     outputProgram = std::move(newOutput);
-    toWorkingLuts = std::move(newToWorking);
+    toWorkingLuts = std::move(newToWorkingLuts);
     fromWorkingLuts = std::move(newFromWorking);
     programKey = key;
   }
@@ -168,6 +187,8 @@ struct Resolver::Impl {
     width = w;
     height = h;
     allocateCurrent(colorType);
+    currentWorking = gl::Texture(gl, w, h, GL_RGBA32F);
+    toWorkingTarget = gl::Framebuffer(gl, currentWorking);
     motion = gl::Texture(gl, w, h, GL_RG32F);
     output = gl::Texture(gl, w, h, GL_RGBA32F);
     for (int i = 0; i < 2; ++i) {
@@ -175,7 +196,7 @@ struct Resolver::Impl {
       history[i] = gl::Texture(gl, w, h, GL_RGBA32F, gl::Texture::Filter::Linear);
       historyState[i] = gl::Texture(gl, w, h, GL_R16F);
     }
-    buildResolveTargets(needsDebug());
+    buildResolveTargets();
     outputTarget = gl::Framebuffer(gl, output);
     hasHistory = false;
     hasPreviousDepth = false;
@@ -183,16 +204,25 @@ struct Resolver::Impl {
 
   bool needsDebug() const { return debugOutput || options.cutDetection > 0.0f; }
 
+  bool resolveTargetsFit() const {
+    return needsDebug() == hasDebugTarget && fusedOutput(options) == hasOutputAttachment;
+  }
+
   // The resolve pass's targets. The debug attachment (float RGBA: 133 MB at 4K) exists only
-  // while something reads it; without it GL drops the shader's debug output.
-  void buildResolveTargets(bool withDebug) {
+  // while something reads it; without it GL drops the shader's debug output. The output texture
+  // is attached when the resolve pass writes it (fusedOutput).
+  void buildResolveTargets() {
+    const bool withDebug = needsDebug();
+    const bool withOutput = fusedOutput(options);
     debug = withDebug ? gl::Texture(gl, width, height, GL_RGBA32F) : gl::Texture();
     for (int i = 0; i < 2; ++i) {
-      std::vector<const gl::Texture*> attachments = {&history[i], &historyState[i]};
-      if (withDebug) attachments.push_back(&debug);
+      std::vector<const gl::Texture*> attachments = {&history[i], &historyState[i],
+                                                     withDebug ? &debug : nullptr};
+      if (withOutput) attachments.push_back(&output);
       resolveTarget[i] = gl::Framebuffer(gl, attachments);
     }
     hasDebugTarget = withDebug;
+    hasOutputAttachment = withOutput;
   }
 
   void setResolveUniforms(const ResolveInput& input, bool useCamera) {
@@ -230,17 +260,26 @@ struct Resolver::Impl {
     p.set("uThinHoldSpeed", options.thinFeatureHoldSpeed);
   }
 
+  void toWorkingPass() {
+    toWorkingTarget.bind();
+    toWorkingProgram.use();
+    toWorkingProgram.set("uCurrent", 0);
+    current.bind(0);
+    toWorkingLuts.bind();
+    triangle.draw();
+    gl::checkError(gl, "to-working pass");
+  }
+
   void resolvePass(int target, int currentDepth) {
     resolveTarget[target].bind();
     resolveProgram.use();
     resolveProgram.set("uHasHistory", hasHistory ? 1 : 0);
-    current.bind(kCurrentUnit);
+    currentWorking.bind(kCurrentUnit);
     history[latest].bind(kHistoryUnit);
     historyState[latest].bind(kHistoryStateUnit);
     motion.bind(kMotionUnit);
     depth[currentDepth].bind(kDepthUnit);
     depth[1 - currentDepth].bind(kPreviousDepthUnit);
-    toWorkingLuts.bind();
     triangle.draw();
     gl::checkError(gl, "resolve pass");
   }
@@ -268,7 +307,7 @@ struct Resolver::Impl {
     } else if (color.type != currentType) {
       allocateCurrent(color.type);
     }
-    if (needsDebug() != hasDebugTarget) buildResolveTargets(needsDebug());
+    if (!resolveTargetsFit()) buildResolveTargets();
 
     const int currentDepth = 1 - latestDepth;
     current.upload(color.data, 4, glType(color.type));
@@ -278,6 +317,7 @@ struct Resolver::Impl {
     setResolveUniforms(input, useCamera);
 
     const int target = 1 - latest;
+    toWorkingPass();
     resolvePass(target, currentDepth);
     lastFrameWasCut = false;
     bool debugRead = false;
@@ -296,7 +336,7 @@ struct Resolver::Impl {
       lastDebug = Image(width, height, 4);
       lastDebug.pixels = resolveTarget[target].readRGBA(kDebugAttachment);
     }
-    outputPass(target);
+    if (!fusedOutput(options)) outputPass(target);
 
     latest = target;
     latestDepth = currentDepth;
