@@ -11,6 +11,7 @@
 #include "history_sampling.glsl"
 #include "history_rectify.glsl"
 #include "camera_reprojection.glsl"
+#include "depth_footprint.glsl"
 #include "blend_weights.glsl"
 
 // Variants, set by the resolver as #define lines (defaults here document the choices).
@@ -99,29 +100,35 @@ bool inColourBox(int dx, int dy) {
 }
 
 // The pixel whose motion this pixel uses: itself, or the closest-depth neighbour so that
-// foreground edges carry their own motion into the silhouette (Karis 2014).
-ivec2 motionSourcePixel(ivec2 p, ivec2 maxPixel) {
+// foreground edges carry their own motion into the silhouette (Karis 2014). `depth` receives
+// that pixel's depth.
+ivec2 motionSourcePixel(ivec2 p, ivec2 maxPixel, out float depth) {
+  if (!uHasDepth) {
+    depth = 1.0;
+    return p;
+  }
 #if MOTION_DILATION > 0
-  if (uHasDepth) {
-    ivec2 best = p;
-    float bestDepth = texelFetch(uDepth, p, 0).r;
-    for (int dy = -1; dy <= 1; ++dy) {
-      for (int dx = -1; dx <= 1; ++dx) {
+  float d[9];
+  depthFootprint(uDepth, p, d);
+  ivec2 best = p;
+  depth = d[4];
+  for (int dy = -1; dy <= 1; ++dy) {
+    for (int dx = -1; dx <= 1; ++dx) {
 #if MOTION_DILATION == 1
-        if (dx != 0 && dy != 0) continue;
+      if (dx != 0 && dy != 0) continue;
 #endif
-        ivec2 q = clamp(p + ivec2(dx, dy), ivec2(0), maxPixel);
-        float d = texelFetch(uDepth, q, 0).r;
-        if (d < bestDepth) {
-          bestDepth = d;
-          best = q;
-        }
+      float candidate = d[3 * (dy + 1) + dx + 1];
+      if (candidate < depth) {
+        depth = candidate;
+        best = clamp(p + ivec2(dx, dy), ivec2(0), maxPixel);
       }
     }
-    return best;
   }
-#endif
+  return best;
+#else
+  depth = texelFetch(uDepth, p, 0).r;
   return p;
+#endif
 }
 
 // Motion of pixel p (raster centre `position`), from vectors, camera, or both.
@@ -168,16 +175,14 @@ bool depthAgrees(float expected, float found, float tolerance) {
 PreviousDepth comparePreviousDepth(vec2 position, float expected, float tolerance) {
   ivec2 maxPixel = textureSize(uPreviousDepth, 0) - 1;
   ivec2 centre = clamp(ivec2(floor(position)), ivec2(0), maxPixel);
-  float closest = 1.0 / 0.0, farthest = 0.0, nearest = 0.0;
-  for (int dy = -1; dy <= 1; ++dy) {
-    for (int dx = -1; dx <= 1; ++dx) {
-      ivec2 q = clamp(centre + ivec2(dx, dy), ivec2(0), maxPixel);
-      float d = texelFetch(uPreviousDepth, q, 0).r;
-      closest = min(closest, d);
-      farthest = max(farthest, d);
-      if (dx == 0 && dy == 0) nearest = d;  // the texel history mostly comes from
-    }
+  float d[9];
+  depthFootprint(uPreviousDepth, centre, d);
+  float closest = d[0], farthest = d[0];
+  for (int i = 1; i < 9; ++i) {
+    closest = min(closest, d[i]);
+    farthest = max(farthest, d[i]);
   }
+  float nearest = d[4];  // the texel history mostly comes from
   PreviousDepth result;
   // Hidden only if every texel around was nearer: a sub-pixel wire seen by one of last frame's
   // centre samples must not reject the backdrop beside it (docs/TUNING.md: the 3x3 closest depth
@@ -233,8 +238,8 @@ void main() {
   vec3 filteredBox = toBoxSpace(filtered.rgb);
   filtered.a = clamp(filtered.a, alphaMin, alphaMax);
 
-  ivec2 source = motionSourcePixel(pixel, maxPixel);
-  float depth = uHasDepth ? texelFetch(uDepth, source, 0).r : 1.0;
+  float depth;
+  ivec2 source = motionSourcePixel(pixel, maxPixel, depth);
   vec2 motion = pixelMotion(source, position, depth);
   vec2 previousPosition = position + motion;
 

@@ -99,6 +99,61 @@ TEST_F(StagesTest, ThinOccluderInThePreviousFrameDoesNotRejectTheBackdrop) {
   }
 }
 
+// Motion comes from the closest-depth pixel of the 3x3 (read by four gathers): each of the nine
+// places, at the image's corners and edges too, where clamping repeats the border pixels.
+TEST_F(StagesTest, MotionComesFromTheClosestDepthOfTheNeighbourhood) {
+  Resolver resolver(*context_, plainOptions());
+  resolver.setDebugOutput(true);
+  // Every pixel's own motion, distinct, small enough to stay on screen.
+  const Image motion = filled(2, [](int x, int y) {
+    return std::vector<float>{0.01f * float(x), 0.01f * float(y) + 0.005f};
+  });
+  const glm::ivec2 last(kWidth - 1, kHeight - 1);
+  for (const glm::ivec2 p : {glm::ivec2(5, 6), glm::ivec2(0, 0), last, glm::ivec2(last.x, 0),
+                             glm::ivec2(10, last.y)}) {
+    for (int dy = -1; dy <= 1; ++dy) {
+      for (int dx = -1; dx <= 1; ++dx) {
+        const glm::ivec2 near = glm::clamp(p + glm::ivec2(dx, dy), glm::ivec2(0), last);
+        const Image depth = filled(1, [&](int x, int y) {
+          return std::vector<float>{glm::ivec2(x, y) == near ? 1.0f : 5.0f};
+        });
+        resolver.resetHistory();
+        run(resolver, grey(0.5f), &depth, &motion);
+        const float* velocity = resolver.lastDebug().at(p.x, p.y) + 2;
+        EXPECT_FLOAT_EQ(velocity[0], motion.at(near.x, near.y)[0])
+            << "pixel " << p.x << "," << p.y << " nearest at " << near.x << "," << near.y;
+        EXPECT_FLOAT_EQ(velocity[1], motion.at(near.x, near.y)[1])
+            << "pixel " << p.x << "," << p.y << " nearest at " << near.x << "," << near.y;
+      }
+    }
+  }
+}
+
+// Disocclusion needs every texel of the previous 3x3 to be nearer: one texel that still shows the
+// surface, in any of the nine places, keeps history.
+TEST_F(StagesTest, OneAgreeingPreviousTexelAnywhereInTheFootprintKeepsHistory) {
+  ResolveOptions o = plainOptions();
+  o.rectify = Rectify::None;
+  Resolver resolver(*context_, o);
+  resolver.setDebugOutput(true);
+  const Image surface = constant(1, 5.0f);
+  const glm::ivec2 p(9, 5);
+  for (int dy = -1; dy <= 1; ++dy) {
+    for (int dx = -1; dx <= 1; ++dx) {
+      // The previous frame: something nearer everywhere but at one texel of p's footprint.
+      const Image previous = filled(1, [&](int x, int y) {
+        return std::vector<float>{x == p.x + dx && y == p.y + dy ? 5.0f : 1.0f};
+      });
+      resolver.resetHistory();
+      run(resolver, grey(0.0f), &previous);
+      run(resolver, grey(1.0f), &surface);
+      EXPECT_EQ(resolver.lastDebug().at(p.x, p.y)[1], float(Rejection::Kept))
+          << "agreeing texel at " << dx << "," << dy;
+      EXPECT_EQ(resolver.lastDebug().at(p.x + 4, p.y)[1], float(Rejection::Disoccluded));
+    }
+  }
+}
+
 TEST_F(StagesTest, ColourFarOutsideTheBoxIsClippedToItsSurface) {
   for (Rectify mode : {Rectify::Clamp, Rectify::Clip, Rectify::VarianceClip}) {
     ResolveOptions o = plainOptions();

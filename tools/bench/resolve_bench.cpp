@@ -51,6 +51,9 @@ int run(std::vector<std::string> args) {
     input.depth = data.depth.empty() ? nullptr : &data.depth;
     input.motion = data.motion.empty() ? nullptr : &data.motion;
     input.jitter = {0.25f, -0.25f};
+    input.camera = data.camera ? &*data.camera : nullptr;
+    input.window = data.window;
+    input.ndc = data.ndc;
     resolver.resolve(input, outputType);
   };
   resolveFrame(0);  // compiles the shader variants and allocates
