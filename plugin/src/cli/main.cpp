@@ -6,6 +6,7 @@
 
 #include "cli/cli_options.h"
 #include "cli/info.h"
+#include "fast_zlib/fast_zlib.h"
 #include "taa/error.h"
 
 namespace {
@@ -22,7 +23,11 @@ int run(const std::vector<std::string>& args) {
   gl::LogSink log = [quiet](const std::string& message) {
     if (!quiet) std::cerr << "taatool: " << message << "\n";
   };
-  if (cl.info) return cli::printInfo(cl.job.backend, log, std::cout);
+  if (cl.info) {
+    const int status = cli::printInfo(cl.job.backend, log, std::cout);
+    std::cout << "EXR zlib codec:  " << fast_zlib::description() << "\n";
+    return status;
+  }
   if (cl.listOptions) {
     std::cout << cli::optionsMarkdownTable();
     return 0;
