@@ -6,30 +6,23 @@
 #include <OpenImageIO/imageio.h>
 #include <glm/gtc/matrix_inverse.hpp>
 #include <glm/gtc/type_ptr.hpp>
-#include <sys/wait.h>
 
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 
 #include "resolve/option_registry.h"
 
 #include "scenegen/convention_writers.h"
 #include "scenegen/exr_output.h"
 #include "scenegen/scene_library.h"
+#include "taatool_runner.h"
 
 namespace taa {
 namespace {
 
 namespace fs = std::filesystem;
 
-struct ToolRun {
-  int exitCode = -1;
-  std::string err;
-};
-
-std::string quoted(const std::string& s) { return "'" + s + "'"; }
+using test::ToolRun;
 
 std::string frameName(const std::string& stem, int frame) {
   char name[64];
@@ -62,24 +55,9 @@ void writeExr(const fs::path& path, const Exr& exr) {
 
 class ConventionsTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::path(TAA_TEST_TMPDIR) / info->name();
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
+  void SetUp() override { dir_ = test::freshTestFolder(); }
 
-  ToolRun run(const std::vector<std::string>& args) const {
-    std::string command = quoted(TAA_TAATOOL_PATH);
-    for (const auto& a : args) command += " " + quoted(a);
-    const fs::path err = dir_ / "stderr.txt";
-    command += " >/dev/null 2>" + quoted(err.string()) + " </dev/null";
-    const int status = std::system(command.c_str());
-    std::ifstream in(err);
-    std::stringstream text;
-    text << in.rdbuf();
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, text.str()};
-  }
+  ToolRun run(const std::vector<std::string>& args) const { return test::runTaatool(args, dir_); }
 
   // Conventions are compared without the tonemap bracket: its inverse near white would magnify
   // the rounding differences between equivalent matrix paths past the tolerances here.
@@ -90,11 +68,7 @@ class ConventionsTest : public ::testing::Test {
   }
 
   void expectError(const ToolRun& r, const std::vector<std::string>& fragments) const {
-    EXPECT_EQ(r.exitCode, 1) << r.err;
-    EXPECT_EQ(r.err.rfind("taatool ERROR: ", 0), 0u) << r.err;
-    for (const auto& f : fragments) {
-      EXPECT_NE(r.err.find(f), std::string::npos) << f << " in " << r.err;
-    }
+    test::expectToolError(r, fragments);
   }
 
   // Frames [1, last] of `scene` rendered once and written by `write` into dir_/name.

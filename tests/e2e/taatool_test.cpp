@@ -2,57 +2,27 @@
 #include <gtest/gtest.h>
 
 #include <OpenImageIO/imageio.h>
-#include <sys/wait.h>
 
 #include <cmath>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 
 #include "scenegen/exr_output.h"
 #include "scenegen/scene_library.h"
+#include "taatool_runner.h"
 
 namespace taa {
 namespace {
 
 namespace fs = std::filesystem;
 
-struct RunResult {
-  int exitCode = -1;
-  std::string out, err;
-};
-
-std::string readText(const fs::path& path) {
-  std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-std::string quoted(const std::string& s) { return "'" + s + "'"; }
+using test::ToolRun;
 
 class TaatoolTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::path(TAA_TEST_TMPDIR) / info->name();
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
+  void SetUp() override { dir_ = test::freshTestFolder(); }
 
-  RunResult run(const std::vector<std::string>& args) const {
-    std::string command = quoted(TAA_TAATOOL_PATH);
-    for (const auto& a : args) command += " " + quoted(a);
-    const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
-    command += " >" + quoted(out.string()) + " 2>" + quoted(err.string()) + " </dev/null";
-    const int status = std::system(command.c_str());
-    RunResult result;
-    result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    result.out = readText(out);
-    result.err = readText(err);
-    return result;
-  }
+  ToolRun run(const std::vector<std::string>& args) const { return test::runTaatool(args, dir_); }
 
   // Writes frames [first, last] of a small scene into dir_/name in the given layout.
   fs::path generate(const std::string& name, scenes::OutputLayout layout, int first = 1,
@@ -83,10 +53,8 @@ class TaatoolTest : public ::testing::Test {
     return names;
   }
 
-  void expectError(const RunResult& r, const std::vector<std::string>& fragments) const {
-    EXPECT_EQ(r.exitCode, 1) << r.err;
-    EXPECT_EQ(r.err.rfind("taatool ERROR: ", 0), 0u) << r.err;
-    for (const auto& f : fragments) EXPECT_NE(r.err.find(f), std::string::npos) << f << " in " << r.err;
+  void expectError(const ToolRun& r, const std::vector<std::string>& fragments) const {
+    test::expectToolError(r, fragments);
   }
 
   fs::path dir_;
@@ -108,7 +76,7 @@ TEST_F(TaatoolTest, ResolvesSeparateFilesIntoRgbaExrKeepingWindows) {
   const fs::path out = dir_ / "out";
   auto args = separateArgs(in, out / "resolved.####.exr");
   args.push_back("-v");
-  const RunResult r = run(args);
+  const ToolRun r = run(args);
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_NE(r.out.find("frame 6 (6/6)"), std::string::npos) << r.out;
   for (int f = 1; f <= 6; ++f) {
@@ -135,7 +103,7 @@ TEST_F(TaatoolTest, CyclesLayoutGivesTheSameOutputAsSeparateFiles) {
   auto args = separateArgs(separate, dir_ / "a.####.exr");
   args.insert(args.end(), {"-d", "float"});
   ASSERT_EQ(run(args).exitCode, 0);
-  const RunResult r = run({"--preset", "cycles", (cycles / "render.####.exr").string(), "-d",
+  const ToolRun r = run({"--preset", "cycles", (cycles / "render.####.exr").string(), "-d",
                            "float", "-o", (dir_ / "b.####.exr").string()});
   ASSERT_EQ(r.exitCode, 0) << r.err;
   for (int f : {1, 4, 6}) {
@@ -177,7 +145,7 @@ TEST_F(TaatoolTest, DepthOrMotionSizeDifferentFromColor) {
   }
   fs::copy_file(small / "motion.0003.exr", in / "motion.0003.exr",
                 fs::copy_options::overwrite_existing);
-  const RunResult r = run(separateArgs(in, dir_ / "out" / "r.####.exr"));
+  const ToolRun r = run(separateArgs(in, dir_ / "out" / "r.####.exr"));
   expectError(r, {"motion.0003.exr", "frame 3", "32x20", "64x40"});
   EXPECT_FALSE(fs::exists(dir_ / "out" / "r.0003.exr"));
   EXPECT_TRUE(fs::exists(dir_ / "out" / "r.0002.exr"));  // earlier frames are complete files
@@ -203,7 +171,7 @@ TEST_F(TaatoolTest, OutputPatternEqualToAnInput) {
   const fs::path in = generate("in", scenes::OutputLayout::Separate, 1, 2);
   const auto before = fs::file_size(in / "beauty.0001.exr");
   // Same files spelled differently: another placeholder style and a "./" detour.
-  const RunResult r = run(separateArgs(in, in / "." / "beauty.%04d.exr"));
+  const ToolRun r = run(separateArgs(in, in / "." / "beauty.%04d.exr"));
   expectError(r, {"output would overwrite an input file", "beauty.0001.exr"});
   EXPECT_EQ(fs::file_size(in / "beauty.0001.exr"), before);
 }
@@ -214,7 +182,7 @@ TEST_F(TaatoolTest, UnknownGlBackend) {
 
 TEST_F(TaatoolTest, InfoReportsAWorkingContextForEachBackend) {
   for (const char* backend : {"egl", "osmesa"}) {
-    const RunResult r = run({"--info", "--gl", backend});
+    const ToolRun r = run({"--info", "--gl", backend});
     EXPECT_EQ(r.exitCode, 0) << backend << ": " << r.err;
     EXPECT_NE(r.out.find(std::string("GL back end:     ") + backend), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("GL self-test:    passed"), std::string::npos) << r.out;
@@ -227,7 +195,7 @@ TEST_F(TaatoolTest, InfoReportsAWorkingContextForEachBackend) {
 }
 
 TEST_F(TaatoolTest, BracketsListedAndChosen) {
-  const RunResult list = run({"--list-brackets"});
+  const ToolRun list = run({"--list-brackets"});
   EXPECT_EQ(list.exitCode, 0) << list.err;
   EXPECT_NE(list.out.find("OCIO config: taa's shipped config"), std::string::npos) << list.out;
   EXPECT_NE(list.out.find("  taa_reinhard\n"), std::string::npos) << list.out;
@@ -235,7 +203,7 @@ TEST_F(TaatoolTest, BracketsListedAndChosen) {
   const fs::path in = generate("in", scenes::OutputLayout::Separate, 1, 2);
   auto args = separateArgs(in, dir_ / "o" / "r.####.exr");
   args.insert(args.end(), {"--bracket", "taa_reinhard"});
-  const RunResult ok = run(args);
+  const ToolRun ok = run(args);
   EXPECT_EQ(ok.exitCode, 0) << ok.err;
   EXPECT_TRUE(fs::exists(dir_ / "o" / "r.0002.exr"));
 
@@ -256,7 +224,7 @@ TEST_F(TaatoolTest, PipelinedAndSerialRunsAreBitIdentical) {
     for (const std::string threads : {"0", "3"}) {
       auto args = separateArgs(in, dir_ / (type + "-t" + threads) / "r.####.exr");
       args.insert(args.end(), {"--threads", threads, "-d", type});
-      const RunResult r = run(args);
+      const ToolRun r = run(args);
       ASSERT_EQ(r.exitCode, 0) << r.err;
     }
     for (int f = 1; f <= 8; ++f) {
@@ -274,7 +242,7 @@ TEST_F(TaatoolTest, PipelinedAndSerialRunsAreBitIdentical) {
 }
 
 TEST_F(TaatoolTest, HelpAndBadArguments) {
-  const RunResult help = run({"--help"});
+  const ToolRun help = run({"--help"});
   EXPECT_EQ(help.exitCode, 0);
   EXPECT_NE(help.out.find("Usage:"), std::string::npos);
   expectError(run({"--frobnicate"}), {"unknown option --frobnicate"});
