@@ -1,20 +1,26 @@
-// taa-resolve-bench: the GL side of a resolve alone, without file I/O. Reads a few frames once,
-// then resolves them over and over (upload, both passes, read-back in the output type) and
-// prints wall and CPU milliseconds per frame. CPU time is the whole process's (user + system,
-// llvmpipe's threads included): on a shared machine it is the steadier figure.
-//   taa-resolve-bench [--repeat N] <taatool arguments: inputs, --frames, resolve options>
-// docs/PERFORMANCE.md quotes it for shader changes; whole runs are timed by scripts/benchmark.sh.
+// taa-resolve-bench: taatool's three stages timed apart, one after another on one thread: reading
+// a few frames, resolving them over and over on the GL side (upload, passes, read-back in the
+// output type), and writing the last results. Prints CPU and wall milliseconds per frame for
+// each. CPU time is the whole process's (user + system; llvmpipe's and OpenEXR's threads
+// included): on a shared machine it is the steadier figure.
+//   taa-resolve-bench [--repeat N] <taatool arguments: inputs, --frames, -o, resolve options>
+// The outputs go to -o's pattern. Linked with taatool's ZIP codec (fast_zlib), as taatool is.
+// docs/PERFORMANCE.md quotes it; whole runs, with the stages overlapped, are timed by
+// scripts/benchmark.sh.
 #include <sys/resource.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <functional>
 #include <iostream>
 #include <string>
 #include <vector>
 
 #include "cli/cli_options.h"
+#include "io/exr_writer.h"
 #include "io/frame_reader.h"
+#include "io/sequence_pattern.h"
 #include "resolve/resolver.h"
 #include "taa/error.h"
 
@@ -27,6 +33,20 @@ double cpuSeconds() {
   return seconds(usage.ru_utime) + seconds(usage.ru_stime);
 }
 
+// "<cpu> ms CPU (<wall> ms wall)" per run of `work`, run `count` times.
+std::string timePerRun(int count, const std::function<void(int)>& work) {
+  const double cpu0 = cpuSeconds();
+  const auto wall0 = std::chrono::steady_clock::now();
+  for (int n = 0; n < count; ++n) work(n);
+  const double wall =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+  const double cpu = cpuSeconds() - cpu0;
+  char text[64];
+  std::snprintf(text, sizeof text, "%.1f ms CPU (%.1f ms wall)", 1e3 * cpu / count,
+                1e3 * wall / count);
+  return text;
+}
+
 int run(std::vector<std::string> args) {
   using namespace taa;
   int repeat = 24;
@@ -37,15 +57,19 @@ int run(std::vector<std::string> args) {
   cli::CommandLine cl = cli::parseCommandLine(args);
   cli::resolveFrameList(cl);
   const SequenceJob& job = cl.job;
-  std::vector<io::FrameData> frames;
-  for (std::size_t i = 0; i < std::min<std::size_t>(job.frames.size(), 4); ++i) {
-    frames.push_back(io::readFrame(job.layout, job.frames[i]));
-  }
+  const int count = int(std::min<std::size_t>(job.frames.size(), 4));
+  std::vector<io::FrameData> frames(static_cast<std::size_t>(count));
+  const std::string read = timePerRun(count, [&](int n) {
+    frames[std::size_t(n)] = io::readFrame(job.layout, job.frames[std::size_t(n)]);
+  });
+
   auto context = gl::Context::create(job.backend);
   Resolver resolver(*context, job.resolve);
-  const SampleType outputType = io::outputSampleType(job.write, frames[0].colorSpec);
+  io::WriteOptions write = job.write;
+  write.rgbaNames = outputChannelNames(job);
+  const SampleType outputType = io::outputSampleType(write, frames[0].colorSpec);
   auto resolveFrame = [&](int n) {
-    const io::FrameData& data = frames[std::size_t(n) % frames.size()];
+    const io::FrameData& data = frames[std::size_t(n % count)];
     ResolveInput input;
     input.color = &data.color;
     input.depth = data.depth.empty() ? nullptr : &data.depth;
@@ -54,18 +78,23 @@ int run(std::vector<std::string> args) {
     input.camera = data.camera ? &*data.camera : nullptr;
     input.window = data.window;
     input.ndc = data.ndc;
-    resolver.resolve(input, outputType);
+    return resolver.resolve(input, outputType);
   };
   resolveFrame(0);  // compiles the shader variants and allocates
   resolveFrame(1);
-  const double cpu0 = cpuSeconds();
-  const auto wall0 = std::chrono::steady_clock::now();
-  for (int n = 0; n < repeat; ++n) resolveFrame(n);
-  const double wall =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
-  const double cpu = cpuSeconds() - cpu0;
-  std::printf("%dx%d, %d resolves: %.1f ms wall, %.1f ms CPU per frame\n", frames[0].color.width(),
-              frames[0].color.height(), repeat, 1e3 * wall / repeat, 1e3 * cpu / repeat);
+  // Each result is dropped at once, as taatool's writer drops it, so its memory is reused.
+  const std::string resolve = timePerRun(repeat, [&](int n) { resolveFrame(n); });
+
+  std::vector<TypedImage> outputs;
+  for (int n = 0; n < count; ++n) outputs.push_back(resolveFrame(n));
+
+  const std::string written = timePerRun(count, [&](int n) {
+    const std::string path = io::expandFramePattern(job.outputPattern, job.frames[std::size_t(n)]);
+    io::writeExrAtomic(path, outputs[std::size_t(n)], frames[std::size_t(n)].colorSpec, write);
+  });
+  std::printf("%dx%d, per frame: read %s; resolve %s over %d resolves; write %s\n",
+              frames[0].color.width(), frames[0].color.height(), read.c_str(), resolve.c_str(),
+              repeat, written.c_str());
   return 0;
 }
 
