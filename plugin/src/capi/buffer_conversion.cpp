@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <cstring>
 #include <string>
+#include <type_traits>
 
 #include "capi/status_error.h"
 #include "io/aov_conversion.h"
@@ -29,24 +30,43 @@ struct Layout {
     const int row = yUp ? height - 1 - topRow : topRow;
     return data + row * rowStride + x * pixelStride;
   }
-  float read(const char* pixel, int channel) const {
-    if (half) {
-      std::uint16_t bits;
-      std::memcpy(&bits, pixel + channel * 2, 2);
-      Imath::half value;
-      value.setBits(bits);
-      return float(value);
-    }
+  Imath::half readHalf(const char* pixel, int channel) const {
+    std::uint16_t bits;
+    std::memcpy(&bits, pixel + channel * 2, 2);
+    Imath::half value;
+    value.setBits(bits);
+    return value;
+  }
+  float readFloat(const char* pixel, int channel) const {
     float value;
     std::memcpy(&value, pixel + channel * 4, 4);
     return value;
   }
+  float read(const char* pixel, int channel) const {
+    return half ? float(readHalf(pixel, channel)) : readFloat(pixel, channel);
+  }
+  // A sample of the buffer's own type T, as stored.
+  template <typename T>
+  T readStored(const char* pixel, int channel) const {
+    if constexpr (std::is_same_v<T, Imath::half>) {
+      return readHalf(pixel, channel);
+    } else {
+      return readFloat(pixel, channel);
+    }
+  }
   void write(char* pixel, int channel, float value) const {
     if (half) {
-      const std::uint16_t bits = Imath::half(value).bits();
-      std::memcpy(pixel + channel * 2, &bits, 2);
+      write(pixel, channel, Imath::half(value));
     } else {
       std::memcpy(pixel + channel * 4, &value, 4);
+    }
+  }
+  void write(char* pixel, int channel, Imath::half value) const {
+    if (half) {
+      const std::uint16_t bits = value.bits();
+      std::memcpy(pixel + channel * 2, &bits, 2);
+    } else {
+      write(pixel, channel, float(value));
     }
   }
 };
@@ -109,28 +129,50 @@ Image readChannels(const Layout& layout) {
   return image;
 }
 
-}  // namespace
+bool isFinite(float value) { return std::isfinite(value); }
+bool isFinite(Imath::half value) { return value.isFinite(); }
 
-Image importColor(const taa_buffer& buffer, int* nonFinite) {
-  const Layout layout = describe(buffer, "color", 3, 4);
-  Image rgba(layout.width, layout.height, 4);
-  int scrubbed = 0;
-  float* out = rgba.pixels.data();
+// RGBA of the buffer's own sample type T; NaN/Inf scrubbed to 0 and counted in `scrubbed`.
+template <typename T>
+ImageOf<T> readRgba(const Layout& layout, int& scrubbed) {
+  ImageOf<T> rgba(layout.width, layout.height, 4);
+  T* out = rgba.pixels.data();
   for (int y = 0; y < layout.height; ++y) {
     for (int x = 0; x < layout.width; ++x, out += 4) {
       const char* pixel = layout.pixel(x, y);
-      out[3] = 1.0f;  // a color without alpha is opaque, as io::readFrame reads it
+      out[3] = T(1.0f);  // a color without alpha is opaque, as io::readFrame reads it
       for (int c = 0; c < layout.channels; ++c) {
-        const float value = layout.read(pixel, c);
-        if (std::isfinite(value)) {
+        const T value = layout.readStored<T>(pixel, c);
+        if (isFinite(value)) {
           out[c] = value;
         } else {
-          out[c] = 0.0f;
+          out[c] = T(0.0f);
           ++scrubbed;
         }
       }
     }
   }
+  return rgba;
+}
+
+template <typename T>
+void writeRgba(const ImageOf<T>& image, const Layout& layout) {
+  for (int y = 0; y < layout.height; ++y) {
+    for (int x = 0; x < layout.width; ++x) {
+      const T* in = image.at(x, y);
+      char* pixel = layout.pixel(x, y);
+      for (int c = 0; c < layout.channels; ++c) layout.write(pixel, c, in[c]);
+    }
+  }
+}
+
+}  // namespace
+
+TypedImage importColor(const taa_buffer& buffer, int* nonFinite) {
+  const Layout layout = describe(buffer, "color", 3, 4);
+  int scrubbed = 0;
+  TypedImage rgba = layout.half ? TypedImage(readRgba<Imath::half>(layout, scrubbed))
+                                : TypedImage(readRgba<float>(layout, scrubbed));
   if (nonFinite) *nonFinite = scrubbed;
   return rgba;
 }
@@ -155,14 +197,12 @@ Image importMotion(const taa_buffer& buffer, const io::MotionConvention& convent
   return motion;
 }
 
-void exportColor(const Image& image, const taa_buffer& buffer) {
-  const Layout layout = describe(buffer, "output", 3, 4, image.width, image.height);
-  for (int y = 0; y < layout.height; ++y) {
-    for (int x = 0; x < layout.width; ++x) {
-      const float* in = image.at(x, y);
-      char* pixel = layout.pixel(x, y);
-      for (int c = 0; c < layout.channels; ++c) layout.write(pixel, c, in[c]);
-    }
+void exportColor(const TypedImage& image, const taa_buffer& buffer) {
+  const Layout layout = describe(buffer, "output", 3, 4, image.width(), image.height());
+  if (const HalfImage* halves = image.halves()) {
+    writeRgba(*halves, layout);
+  } else {
+    writeRgba(*image.floats(), layout);
   }
 }
 

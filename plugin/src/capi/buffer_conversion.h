@@ -1,6 +1,8 @@
 // Host buffers (taa_buffer: half or float, any strides, rows top or bottom first) to and from
-// taa's internal Image (float, interleaved, rows top first), with the input conventions of
-// DESIGN.md section 3 applied on the way in exactly as io::readFrame applies them to files.
+// taa's internal images (interleaved, rows top first), with the input conventions of DESIGN.md
+// section 3 applied on the way in exactly as io::readFrame applies them to files. Colour keeps
+// the host's sample type, as io::readFrame keeps a file's, so half colour reaches the GPU without
+// being widened on the CPU (the resolve samples the same values either way).
 #pragma once
 
 #include "io/aov_layout.h"
@@ -13,8 +15,9 @@ namespace taa::capi {
 // buffer, a channel count it cannot take, or (width, height) different from `expectWidth`,
 // `expectHeight` when those are positive.
 
-// 3 or 4 channels -> RGBA (missing A = 1), NaN/Inf -> 0 (counted in *nonFinite if given).
-Image importColor(const taa_buffer& buffer, int* nonFinite = nullptr);
+// 3 or 4 channels -> RGBA (missing A = 1), NaN/Inf -> 0 (counted in *nonFinite if given);
+// half for a half buffer, else float.
+TypedImage importColor(const taa_buffer& buffer, int* nonFinite = nullptr);
 // 1 channel -> planar depth per `convention` (io::convertDepth); radial depth is refused.
 Image importDepth(const taa_buffer& buffer, const io::DepthConvention& convention,
                   int expectWidth, int expectHeight);
@@ -23,7 +26,9 @@ Image importDepth(const taa_buffer& buffer, const io::DepthConvention& conventio
 Image importMotion(const taa_buffer& buffer, const io::MotionConvention& convention,
                    int expectWidth, int expectHeight);
 
-// Writes RGBA `image` into `buffer` (3 or 4 channels, the image's size); 3 drops alpha.
-void exportColor(const Image& image, const taa_buffer& buffer);
+// Writes RGBA `image` into `buffer` (3 or 4 channels, the image's size); 3 drops alpha. Samples
+// already of the buffer's type are copied, others converted (half widens exactly, float -> half
+// rounds as Imath::half), so an output read back in the buffer's type passes through as is.
+void exportColor(const TypedImage& image, const taa_buffer& buffer);
 
 }  // namespace taa::capi

@@ -71,12 +71,12 @@ void Node::pushFrame(const taa_frame& frame) {
                                                       " has no color buffer (NULL)");
   }
   // Convert every input before touching the resolver, so a bad buffer leaves history intact.
-  const Image color = importColor(*frame.color);
+  // Half colour stays half: the resolver uploads it as is.
+  const TypedImage color = importColor(*frame.color);
+  const int width = color.width(), height = color.height();
   Image depth, motion;
-  if (frame.depth) depth = importDepth(*frame.depth, parameters_.depth, color.width, color.height);
-  if (frame.motion) {
-    motion = importMotion(*frame.motion, parameters_.motion, color.width, color.height);
-  }
+  if (frame.depth) depth = importDepth(*frame.depth, parameters_.depth, width, height);
+  if (frame.motion) motion = importMotion(*frame.motion, parameters_.motion, width, height);
 
   ensureContext();
   std::optional<CurrentContext> current;
@@ -107,11 +107,14 @@ void Node::pushFrame(const taa_frame& frame) {
       camera.worldToCamera = glm::dmat4(glm::make_mat4(frame.world_to_camera));
       camera.worldToNdc = glm::dmat4(glm::make_mat4(frame.world_to_ndc));
       input.camera = &camera;
-      input.window.displayWidth = color.width;
-      input.window.displayHeight = color.height;
+      input.window.displayWidth = width;
+      input.window.displayHeight = height;
       input.ndc = parameters_.ndc;
     }
-    output_ = resolver_->resolve(input);
+    // The output buffer's type is only known at taa_node_read_output, and a half read-back
+    // cannot give back the float result, so read float; exportColor narrows it to a half
+    // buffer exactly as a half read-back would have.
+    output_ = resolver_->resolve(input, SampleType::Float);
   } catch (const Error& e) {
     throw StatusError(TAA_ERROR_INTERNAL,
                       "frame " + std::to_string(frame.frame) + ": " + e.what());

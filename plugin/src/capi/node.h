@@ -46,7 +46,7 @@ class Node {
   bool parametersChanged_ = false;
   bool resetRequested_ = false;
   std::optional<int> lastFrame_;
-  Image output_;
+  TypedImage output_;
   std::optional<std::array<float, 16>> worldToCamera_, worldToNdc_;
 };
 
