@@ -61,5 +61,16 @@ TEST(Jitter, NoneIsZero) {
   EXPECT_EQ(frameJitter(5, options), glm::vec2(0.0f));
 }
 
+TEST(Jitter, ScaleMultipliesTheOffsets) {
+  JitterOptions options;
+  options.scale = 0.5f;
+  for (int frame : {1, 4, 17}) {
+    const glm::vec2 full = frameJitter(frame, JitterOptions{});
+    const glm::vec2 half = frameJitter(frame, options);
+    EXPECT_FLOAT_EQ(half.x, 0.5f * full.x);
+    EXPECT_FLOAT_EQ(half.y, 0.5f * full.y);
+  }
+}
+
 }  // namespace
 }  // namespace taa

@@ -22,6 +22,10 @@ struct JitterOptions {
   // 0: the index grows forever. P > 0: the index cycles through 1..P (Halton's index 0, the
   // corner (-0.5, -0.5), is skipped, as game engines do with their 8- or 16-sample cycles).
   int period = 0;
+  // Pixels of the images per pixel of the render the offsets were made for: Halton offsets are
+  // in the renderer's pixels, so images scaled after rendering (a host's proxy at half size,
+  // a downscaled plate) need them scaled alike: 0.5 at half size.
+  float scale = 1.0f;
 };
 
 // The OpenColorIO tonemap bracket (DESIGN.md section 5): the resolve runs on colour converted

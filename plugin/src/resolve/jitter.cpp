@@ -27,8 +27,8 @@ int haltonIndex(int frame, const JitterOptions& options) {
 glm::vec2 frameJitter(int frame, const JitterOptions& options) {
   if (options.source == JitterSource::None) return {0.0f, 0.0f};
   const int i = haltonIndex(frame, options);
-  return {static_cast<float>(radicalInverse(i, 2) - 0.5),
-          static_cast<float>(radicalInverse(i, 3) - 0.5)};
+  return options.scale * glm::vec2(static_cast<float>(radicalInverse(i, 2) - 0.5),
+                                   static_cast<float>(radicalInverse(i, 3) - 0.5));
 }
 
 }  // namespace taa

@@ -15,7 +15,8 @@ double radicalInverse(int index, int base);
 // The Halton index used for `frame`, after offset and period.
 int haltonIndex(int frame, const JitterOptions& options);
 
-// The jitter of `frame`: (halton2(i) - 0.5, halton3(i) - 0.5), or (0, 0) for None.
+// The jitter of `frame`: (halton2(i) - 0.5, halton3(i) - 0.5) times options.scale, or (0, 0)
+// for None.
 glm::vec2 frameJitter(int frame, const JitterOptions& options);
 
 }  // namespace taa

@@ -153,6 +153,16 @@ std::vector<Entry> makeEntries() {
     e.get = [](const ResolveOptions& o) { return std::to_string(o.jitter.period); };
     entries.push_back(e);
   }
+  {
+    Entry e{{"jitter-scale", "Unjitter", "0..", "",
+             "image pixels per render pixel: Halton offsets are in the renderer's pixels, so "
+             "images scaled after rendering need them scaled alike (0.5 at half size)"}, {}, {}};
+    e.set = [](ResolveOptions& o, const std::string& v) {
+      o.jitter.scale = parseNumber("jitter-scale", v, 0.0f, kNoLimit);
+    };
+    e.get = [](const ResolveOptions& o) { return formatNumber(o.jitter.scale); };
+    entries.push_back(e);
+  }
   entries.push_back(enumOption<MotionDilation>(
       {"motion-dilation", "Reprojection", "", "", "take motion from the closest-depth pixel of "
        "the 3x3 (box) or plus neighbourhood, so edges carry the foreground's motion; needs depth"},
