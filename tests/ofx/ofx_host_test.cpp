@@ -13,6 +13,7 @@
 #include <unistd.h>
 
 #include "scenegen/exr_output.h"
+#include "taa/options.h"
 #include "scenegen/scene_library.h"
 #include "test_host.h"
 
@@ -82,6 +83,8 @@ class OfxHostTest : public ::testing::Test {
     ASSERT_EQ(runTaatool(in + " -o '" + (dir_ / "taatool/out.####.exr").string() + "'"), 0);
     ASSERT_EQ(runTaatool(in + " --frames 6-8 -o '" + (dir_ / "taatool68/out.####.exr").string() +
                          "'"), 0);
+    ASSERT_EQ(runTaatool(in + " --jitter-scale 0.5 --motion-scale 0.5 -o '" +
+                         (dir_ / "taatool-half-scale/out.####.exr").string() + "'"), 0);
     for (int f = kFirst; f <= kLast; ++f) {
       const std::string n = std::to_string(10000 + f).substr(1);
       color_.frames[f] = readChannels((dir_ / ("beauty." + n + ".exr")).string(),
@@ -128,9 +131,11 @@ class OfxHostTest : public ::testing::Test {
     effect.reset();
   }
 
-  Image render(HostEffect& effect, int frame, OfxStatus expectedStatus = kOfxStatOK) {
+  Image render(HostEffect& effect, int frame, OfxStatus expectedStatus = kOfxStatOK,
+               double renderScale = 1.0) {
     OutputImage output;
-    EXPECT_EQ(host_.render(effect, frame, output), expectedStatus) << "frame " << frame;
+    EXPECT_EQ(host_.render(effect, frame, output, renderScale), expectedStatus)
+        << "frame " << frame;
     return output.toImage();
   }
 
@@ -165,7 +170,9 @@ TEST_F(OfxHostTest, DescriptorDeclaresTemporalAccessDepthsAndContexts) {
             std::vector<std::string>{kOfxImageComponentRGBA});
   const auto& params = contextDescriptor_.params;
   ASSERT_TRUE(params.count("blend"));
-  EXPECT_DOUBLE_EQ(params.at("blend").props.getDouble(kOfxParamPropDefault), 0.1);
+  // Defaults are the library's (taatool's), not numbers of the plugin's own.
+  EXPECT_DOUBLE_EQ(params.at("blend").props.getDouble(kOfxParamPropDefault),
+                   double(ResolveOptions{}.blend));
   for (const char* name : {"rectify", "dilateMotion", "jitter", "jitterOffset", "jitterPeriod",
                            "motionY", "motionTo", "motionScale", "historyFrames"}) {
     EXPECT_TRUE(params.count(name)) << name;
@@ -209,6 +216,20 @@ TEST_F(OfxHostTest, SequentialRenderMatchesTaatool) {
   EXPECT_GT(maxDifference(expected(kLast), expected(kLast, "taatool68")), 1e-3f);
   EXPECT_EQ(host_.liveImages(), 0);
   EXPECT_TRUE(host_.messages().empty());
+  destroy(effect);
+}
+
+// A render at scale 0.5 means images half the size of the render their motion vectors and
+// jitter were made for: the plugin scales both, as taatool's --motion-scale and --jitter-scale
+// do. (This host hands over the same images at either scale; only the parameters differ.)
+TEST_F(OfxHostTest, RenderScaleScalesMotionAndJitterLikeTaatool) {
+  auto effect = instance();
+  for (int f = kFirst; f <= kLast; ++f) {
+    const Image halfScale = render(*effect, f, kOfxStatOK, 0.5);
+    EXPECT_LE(maxDifference(halfScale, expected(f, "taatool-half-scale")), 1e-5f) << "frame " << f;
+  }
+  // The scaled result differs from the full-scale one: the comparison can fail.
+  EXPECT_GT(maxDifference(expected(kLast), expected(kLast, "taatool-half-scale")), 1e-3f);
   destroy(effect);
 }
 

@@ -126,7 +126,8 @@ bool PluginSettings::operator==(const PluginSettings& o) const {
 
 void defineParameters(OfxParamSetHandle set) {
   defineDouble(set, kBlend, "Blend",
-               "Weight of the current frame in the exponential blend (taatool --blend).", 0.1,
+               "Weight of the current frame in the exponential blend (taatool --blend).",
+               double(taa::ResolveOptions{}.blend),
                0.001, 1.0);
   defineChoice(set, kRectify, "Rectify",
                "How history is brought into the current neighbourhood's colour box (none only "
@@ -186,7 +187,10 @@ void applySettings(taa_node* node, const PluginSettings& s, double renderScale) 
   require(node, taa_node_set_int(node, "jitter-period", s.jitterPeriod));
   require(node, taa_node_set_string(node, "motion-y", s.motionY == 1 ? "up" : "down"));
   require(node, taa_node_set_string(node, "motion-to", s.motionTo == 1 ? "next" : "previous"));
+  // A render at scale s gets images s times the size of the render the vectors and the jitter
+  // were made for: both are in that render's pixels.
   require(node, taa_node_set_float(node, "motion-scale", float(s.motionScale * renderScale)));
+  require(node, taa_node_set_float(node, "jitter-scale", float(renderScale)));
   require(node, taa_node_set_float(node, "depth-nohit", float(s.depthNoHit)));
 }
 

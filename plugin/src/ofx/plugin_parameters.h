@@ -3,12 +3,13 @@
 #pragma once
 
 #include "ofx/ofx_abi.h"
+#include "taa/options.h"
 #include "taa/taa.h"
 
 namespace taa::ofx {
 
 struct PluginSettings {
-  double blend = 0.1;         // --blend
+  double blend = taa::ResolveOptions{}.blend;  // --blend
   int rectify = 0;            // 0 variance clip, 1 clip, 2 clamp, 3 none (--rectify)
   bool dilateMotion = true;   // --no-dilate when false
   int jitter = 0;             // 0 Halton, 1 None (--jitter)
