@@ -63,6 +63,7 @@ uniform float uVelocityScale;        // px/frame at which uVelocityBlend is reac
 uniform float uAntiFlicker;          // 0..1: how much agreeing luma lowers the current weight
 uniform bool uLumaWeighting;         // 1 / (1 + luma) blend weights
 uniform bool uSampleCount;           // weight of the current frame at least 1 / samples
+uniform bool uAntiRinging;           // reconstruction kept within its samples' range
 uniform float uVarianceGamma;        // RECTIFY 3: box = mean +- gamma sigma
 uniform float uDepthTolerance;       // relative depth change that counts as disocclusion; 0: off
 uniform float uThinHold;             // 0..1: keep unrectified history on depth-confirmed pixels
@@ -218,11 +219,14 @@ void main() {
   vec3 boxSum = vec3(0.0), boxSumOfSquares = vec3(0.0);
   float boxCount = 0.0;
   float alphaMin = 1e30, alphaMax = -1e30;
+  vec3 rgbMin = vec3(1e30), rgbMax = vec3(-1e30);
   for (int dy = -1; dy <= 1; ++dy) {
     for (int dx = -1; dx <= 1; ++dx) {
       ivec2 q = clamp(pixel + ivec2(dx, dy), ivec2(0), maxPixel);
       vec4 sampleColor = texelFetch(uCurrent, q, 0);
       filtered += uReconstruction[3 * (dy + 1) + dx + 1] * sampleColor;
+      rgbMin = min(rgbMin, sampleColor.rgb);
+      rgbMax = max(rgbMax, sampleColor.rgb);
       if (inColourBox(dx, dy)) {
         vec3 c = toBoxSpace(sampleColor.rgb);
         boxMin = min(boxMin, c);
@@ -235,6 +239,9 @@ void main() {
       }
     }
   }
+  // Anti-ringing: Lanczos' negative lobes overshoot at high-contrast edges (halos, negative
+  // values beside bright pixels); the samples' own range bounds what the pixel can be.
+  if (uAntiRinging) filtered.rgb = clamp(filtered.rgb, rgbMin, rgbMax);
   vec3 filteredBox = toBoxSpace(filtered.rgb);
   filtered.a = clamp(filtered.a, alphaMin, alphaMax);
 

@@ -154,6 +154,29 @@ TEST_F(StagesTest, OneAgreeingPreviousTexelAnywhereInTheFootprintKeepsHistory) {
   }
 }
 
+// Lanczos-2's negative lobe rings beside a bright edge, below zero here; anti-ringing keeps the
+// reconstruction within the 3x3 samples' range.
+TEST_F(StagesTest, AntiRingingKeepsTheReconstructionWithinItsSamples) {
+  ResolveOptions o = plainOptions();
+  o.reconstruction = Reconstruction::Lanczos2;
+  const Image edge = filled(4, [](int x, int) {
+    const float v = x >= 12 ? 10.0f : 0.1f;
+    return std::vector<float>{v, v, v, 1};
+  });
+  // Samples 0.4 px right of their centres: pixel 11's right neighbour, the first bright one,
+  // sits 1.4 px away, in Lanczos-2's negative lobe.
+  const glm::vec2 jitter(0.4f, 0.0f);
+  Resolver ringing(*context_, o);
+  EXPECT_LT(run(ringing, edge, nullptr, nullptr, jitter).at(11, 6)[0], 0.0f);
+  o.antiRinging = true;
+  Resolver clamped(*context_, o);
+  const Image out = run(clamped, edge, nullptr, nullptr, jitter);
+  for (int x = 0; x < kWidth; ++x) {
+    EXPECT_GE(out.at(x, 6)[0], 0.1f) << "x " << x;
+    EXPECT_LE(out.at(x, 6)[0], 10.0f) << "x " << x;
+  }
+}
+
 TEST_F(StagesTest, ColourFarOutsideTheBoxIsClippedToItsSurface) {
   for (Rectify mode : {Rectify::Clamp, Rectify::Clip, Rectify::VarianceClip}) {
     ResolveOptions o = plainOptions();

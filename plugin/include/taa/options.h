@@ -62,6 +62,10 @@ struct ResolveOptions {
   // samples: Centre (the pixel's own sample, no filter), BlackmanHarris (soft, no ringing),
   // Lanczos2 (sharper, small negative lobes).
   Reconstruction reconstruction = Reconstruction::Lanczos2;
+  // Keep the reconstructed colour within its 3x3 samples' per-channel range: Lanczos-2's
+  // negative lobes otherwise ring around high-contrast edges, down to negative values beside
+  // bright ones.
+  bool antiRinging = false;
   // How each frame's samples were offset from pixel centres.
   JitterOptions jitter;
 

@@ -119,6 +119,10 @@ std::vector<Entry> makeEntries() {
        {"lanczos2", Reconstruction::Lanczos2},
        {"centre", Reconstruction::Centre}},
       &ResolveOptions::reconstruction));
+  entries.push_back(switchOption({"anti-ringing", "Unjitter", "", "",
+                                  "keep the reconstruction within its 3x3 samples' range: no "
+                                  "halos or negative values beside bright edges, a little softer"},
+                                 &ResolveOptions::antiRinging));
   {
     Entry e{{"jitter", "Unjitter", "halton|none", "", "the renderer's per-frame sample offset: "
              "Halton(2,3) indexed by frame number, or none"}, {}, {}};

@@ -254,6 +254,7 @@ struct Resolver::Impl {
     p.set("uAntiFlicker", options.antiFlicker);
     p.set("uLumaWeighting", options.lumaWeighting ? 1 : 0);
     p.set("uSampleCount", options.sampleCount ? 1 : 0);
+    p.set("uAntiRinging", options.antiRinging ? 1 : 0);
     p.set("uVarianceGamma", options.varianceGamma);
     p.set("uDepthTolerance", options.depthTolerance);
     p.set("uThinHold", options.thinFeatureHold);
