@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
 
 #include <glm/vec4.hpp>
 
@@ -270,6 +272,50 @@ TEST_F(ResolverTest, FusedAndSeparateOutputPassesAgree) {
     }
     if (f == 1 || f == 4) {
       EXPECT_EQ(actual.pixels, expected.pixels);  // the same program
+    }
+  }
+}
+
+// A bracket whose OCIO shaders sample LUT textures (a user config's 1D LUT, x -> x / 2, exact
+// under linear interpolation): each pass must bind its own transform's LUTs, whether the output
+// conversion runs in the resolve pass (no sharpening) or in the output pass.
+TEST_F(ResolverTest, LutBracketRoundTripsInBothOutputPaths) {
+  const std::string dir = std::string(TAA_TEST_TMPDIR) + "/lut_bracket";
+  std::filesystem::create_directories(dir);
+  {
+    std::ofstream lut(dir + "/half.spi1d");
+    lut << "Version 1\nFrom 0.0 65536.0\nLength 4097\nComponents 1\n{\n";
+    for (int i = 0; i <= 4096; ++i) lut << "  " << 8.0 * i << "\n";
+    lut << "}\n";
+    std::ofstream config(dir + "/config.ocio");
+    config << "ocio_profile_version: 2\nsearch_path: \".\"\nroles:\n  default: lin\n"
+              "  scene_linear: lin\n"
+              "file_rules:\n  - !<Rule> {name: Default, colorspace: default}\n"
+              "displays:\n  d:\n    - !<View> {name: v, colorspace: lin}\n"
+              "colorspaces:\n  - !<ColorSpace> {name: lin}\n"
+              "  - !<ColorSpace>\n    name: half_lut\n"
+              "    from_scene_reference: !<FileTransform>\n"
+              "      {src: half.spi1d, interpolation: linear}\n";
+  }
+  const Image grey = [] {
+    Image image(16, 12, 4);
+    for (std::size_t i = 0; i < image.pixels.size(); ++i) {
+      image.pixels[i] = i % 4 == 3 ? 1.0f : 3.0f;
+    }
+    return image;
+  }();
+  for (float sharpen : {0.0f, 1e-6f}) {
+    SCOPED_TRACE(sharpen == 0.0f ? "output in the resolve pass" : "output pass");
+    ResolveOptions options;
+    options.color.ocioConfig = dir + "/config.ocio";
+    options.color.bracket = "half_lut";
+    options.sharpen = sharpen;
+    Resolver resolver(*context_, options);
+    ResolveInput input;
+    input.color = &grey;
+    const Image out = resolver.resolve(input);
+    for (std::size_t i = 0; i < out.pixels.size(); ++i) {
+      ASSERT_NEAR(out.pixels[i], grey.pixels[i], 1e-4f) << "value " << i;
     }
   }
 }

@@ -281,6 +281,7 @@ struct Resolver::Impl {
     motion.bind(kMotionUnit);
     depth[currentDepth].bind(kDepthUnit);
     depth[1 - currentDepth].bind(kPreviousDepthUnit);
+    if (fusedOutput(options)) fromWorkingLuts.bind();  // the to-working pass bound its own there
     triangle.draw();
     gl::checkError(gl, "resolve pass");
   }
