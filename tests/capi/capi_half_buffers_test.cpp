@@ -78,10 +78,13 @@ NodePtr makeNode() {
 
 // Pushes `frames` into a fresh node with colour buffers of type `in`, reading every output into
 // a buffer of type `out`.
-std::vector<TypedImage> resolve(const std::vector<Frame>& frames, SampleType in, SampleType out) {
+std::vector<TypedImage> resolve(const std::vector<Frame>& frames, SampleType in, SampleType out,
+                                const char* outputType = "float") {
   NodePtr node = makeNode();
   std::vector<TypedImage> outputs;
   if (!node) return outputs;
+  EXPECT_EQ(taa_node_set_string(node.get(), "output-type", outputType), TAA_OK)
+      << taa_node_last_error(node.get());
   for (const Frame& f : frames) {
     const TypedImage color = in == SampleType::Half ? TypedImage(f.color)
                                                     : TypedImage(TypedImage(f.color).toFloat());
@@ -172,6 +175,28 @@ TEST(CapiHalfBuffers, EveryBufferTypePairGivesTheFloatResult) {
           << name(pair[0]) << " in, " << name(pair[1]) << " out, frame " << frames[i].number;
     }
   }
+}
+
+// "output-type" half: the result is read back from GL as half (rounded as Imath narrows), so a
+// half buffer gets the narrowed float result bit for bit and a float buffer its widening.
+TEST(CapiHalfBuffers, HalfReadBackGivesTheNarrowedResult) {
+  const std::vector<Frame> frames = makeFrames();
+  const std::vector<Image> reference = resolveDirectly(frames);
+  for (SampleType out : {SampleType::Half, SampleType::Float}) {
+    const std::vector<TypedImage> outputs = resolve(frames, SampleType::Half, out, "half");
+    ASSERT_EQ(outputs.size(), frames.size());
+    for (std::size_t i = 0; i < frames.size(); ++i) {
+      const TypedImage narrowed = as(reference[i], SampleType::Half);
+      const TypedImage expected =
+          out == SampleType::Half ? narrowed : TypedImage(narrowed.toFloat());
+      EXPECT_EQ(mismatches(outputs[i], expected), 0)
+          << name(out) << " buffer, frame " << frames[i].number;
+    }
+  }
+  NodePtr node = makeNode();
+  EXPECT_EQ(taa_node_set_string(node.get(), "output-type", "double"), TAA_ERROR_INVALID_ARGUMENT);
+  EXPECT_NE(std::string(taa_node_last_error(node.get())).find("float|half"), std::string::npos)
+      << taa_node_last_error(node.get());
 }
 
 TEST(CapiHalfBuffers, NonFiniteHalfColorResolvesAsZero) {

@@ -126,7 +126,10 @@ TAA_API const char* taa_node_last_error(const taa_node* node);
  * - The node's input conventions are typed: "motion-y" down|up, "motion-to" previous|next
  *   (strings); "motion-scale", "depth-nohit" (floats); "reset-on-gap" 0/1 (int, default 1:
  *   history restarts when a frame is not the previous one + 1, as taatool does); "ndc"
- *   zero-one-y-down|minus-one-one-y-up (string: what world_to_ndc maps to).
+ *   zero-one-y-down|minus-one-one-y-up (string: what world_to_ndc maps to); "output-type"
+ *   float|half (string, default float: the type the result is read back from the GPU in;
+ *   half suits half output buffers: half the read-back, no conversion, the same values a
+ *   float read-back narrowed gives).
  * An unknown name gives TAA_ERROR_UNKNOWN_PARAMETER, a typed parameter set with another type
  * TAA_ERROR_WRONG_TYPE, a value out of range TAA_ERROR_INVALID_ARGUMENT; the message names the
  * parameter. Changes apply from the next pushed frame. */

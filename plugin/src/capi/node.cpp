@@ -111,10 +111,10 @@ void Node::pushFrame(const taa_frame& frame) {
       input.window.displayHeight = height;
       input.ndc = parameters_.ndc;
     }
-    // The output buffer's type is only known at taa_node_read_output, and a half read-back
-    // cannot give back the float result, so read float; exportColor narrows it to a half
-    // buffer exactly as a half read-back would have.
-    output_ = resolver_->resolve(input, SampleType::Float);
+    // The output buffer's type is only known at taa_node_read_output, so the host says which
+    // read-back it wants ("output-type"): float by default, which exportColor narrows into a
+    // half buffer exactly as a half read-back would have.
+    output_ = resolver_->resolve(input, parameters_.outputType);
   } catch (const Error& e) {
     throw StatusError(TAA_ERROR_INTERNAL,
                       "frame " + std::to_string(frame.frame) + ": " + e.what());

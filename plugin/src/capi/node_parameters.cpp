@@ -79,6 +79,10 @@ const std::map<std::string, InputParameter>& inputParameters() {
          if (v != 0 && v != 1) outOfRange("reset-on-gap", "0 or 1", std::to_string(v));
          p.resetOnGap = v == 1;
        })},
+      {"output-type", stringParameter([](NodeParameters& p, const std::string& v) {
+         p.outputType = choice("output-type", v, {"float", "half"}) == 1 ? SampleType::Half
+                                                                          : SampleType::Float;
+       })},
       {"ndc", stringParameter([](NodeParameters& p, const std::string& v) {
          p.ndc = choice("ndc", v, {"zero-one-y-down", "minus-one-one-y-up"}) == 0
                      ? NdcConvention::ZeroOneYDown

@@ -8,6 +8,7 @@
 #include "io/aov_layout.h"
 #include "resolve/camera.h"
 #include "taa/options.h"
+#include "util/image.h"
 
 namespace taa::capi {
 
@@ -17,6 +18,9 @@ struct NodeParameters {
   io::DepthConvention depth;
   bool resetOnGap = true;  // restart history when frame != previous frame + 1 (as taatool)
   NdcConvention ndc = NdcConvention::ZeroOneYDown;  // what the frames' world_to_ndc maps to
+  // The type the result is read back from GL in. Half halves the read-back and skips the
+  // conversion for hosts with half output buffers; float keeps the full result for any buffer.
+  SampleType outputType = SampleType::Float;
 };
 
 // Names are taatool's option names ('_' may stand for '-'). Resolve options (the registry of
