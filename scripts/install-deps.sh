@@ -12,6 +12,7 @@ packages=(
   libgl-dev libegl-dev libegl-mesa0 libosmesa6-dev libgl1-mesa-dri  # headless GL on llvmpipe
   libgtest-dev
   pybind11-dev python3-dev python3-numpy python3-pytest python3-openimageio  # Python module
+  blender fonts-dejavu-core  # real renders for the yardstick and its tests; contact sheet labels
 )
 
 sudo_cmd=()
