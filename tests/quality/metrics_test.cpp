@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "yardstick/metrics.h"
+#include "yardstick/report.h"
 #include "yardstick/sequence_score.h"
 
 namespace taa::yardstick {
@@ -118,6 +119,42 @@ TEST(YardstickMetrics, DisocclusionAgeFollowsFlowAndExpires) {
   EXPECT_EQ(age.recent(3).at(3, 0)[0], 0.0f);
 }
 
+// The truth's own change is taken out: a sequence equal to the truth has no temporal error
+// however much the truth changes; a constant offset has none either (it does not change);
+// an offset that alternates sign from frame to frame is counted twice its size.
+TEST(YardstickMetrics, TemporalErrorMeasuresChangeBeyondTheTruths) {
+  const auto truth = [](int frame) {
+    return makeImage(8, 4, [frame](int x, int y) { return 0.05 * ((x + 3 * frame) % 7) + 0.02 * y; });
+  };
+  Image flow(8, 4, 2), disocclusion(8, 4, 1);
+  disocclusion.at(2, 1)[0] = 1.0f;
+  const Image truthBefore = truth(0), truthNow = truth(1);
+  const MeanAccumulator same = temporalError(truthNow, truthBefore, truthNow, truthBefore, flow,
+                                             disocclusion);
+  EXPECT_EQ(same.count, 8 * 4 - 1);
+  EXPECT_DOUBLE_EQ(same.mean(), 0.0);
+  auto offset = [](Image image, float by) {
+    for (float& v : image.pixels) v += by;
+    return image;
+  };
+  EXPECT_NEAR(temporalError(offset(truthNow, 0.1f), offset(truthBefore, 0.1f), truthNow,
+                            truthBefore, flow, disocclusion).mean(), 0.0, 1e-6);
+  EXPECT_NEAR(temporalError(offset(truthNow, 0.1f), offset(truthBefore, -0.1f), truthNow,
+                            truthBefore, flow, disocclusion).mean(), 0.2, 1e-6);
+}
+
+// The ladder (spp -> PSNR) is read in log2(spp): half way between the 2 and 4 spp rungs is
+// 2 * sqrt(2) spp; below the raw input it is "<1" (0), above the last rung +inf.
+TEST(YardstickReport, EquivalentSppInterpolatesInLog2) {
+  const std::vector<std::pair<int, double>> ladder = {{1, 20.0}, {2, 23.0}, {4, 26.0}};
+  EXPECT_DOUBLE_EQ(equivalentSpp(20.0, ladder), 1.0);
+  EXPECT_NEAR(equivalentSpp(24.5, ladder), 2.0 * std::sqrt(2.0), 1e-12);
+  EXPECT_DOUBLE_EQ(equivalentSpp(26.0, ladder), 4.0);
+  EXPECT_EQ(equivalentSpp(19.0, ladder), 0.0);
+  EXPECT_TRUE(std::isinf(equivalentSpp(27.0, ladder)));
+  EXPECT_TRUE(std::isnan(equivalentSpp(25.0, {})));
+}
+
 // Sequence ratios: output == truth has flicker 1; output == raw input has ghosting 1.
 TEST(YardstickScores, RatiosAreOneForTheirReferences) {
   std::vector<ReferenceFrame> frames;
@@ -142,10 +179,12 @@ TEST(YardstickScores, RatiosAreOneForTheirReferences) {
   EXPECT_TRUE(std::isinf(ofTruth.psnr));
   EXPECT_NEAR(ofTruth.ssim, 1.0, 1e-6);
   EXPECT_DOUBLE_EQ(ofTruth.flicker, 1.0);
+  EXPECT_DOUBLE_EQ(ofTruth.temporal, 0.0);
   EXPECT_DOUBLE_EQ(ofTruth.ghosting, 0.0);
   const Scores ofRaw = score(reference, raw);
   EXPECT_DOUBLE_EQ(ofRaw.ghosting, 1.0);
   EXPECT_GT(ofRaw.flicker, 1.0);
+  EXPECT_GT(ofRaw.temporal, 0.0);
 }
 
 // A new shot restarts the warm-up.

@@ -1,44 +1,16 @@
 // taa-yardstick end to end on one tiny scene: generates it (then reuses it), runs the real
 // taatool per configuration, and writes the table and page with the expected rows.
-#include <sys/wait.h>
-
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 
 #include <gtest/gtest.h>
 
+#include "yardstick_runner.h"
+
 namespace {
 
-struct ToolRun {
-  int exitCode = -1;
-  std::string output;  // stdout and stderr together
-};
-
-ToolRun runYardstick(const std::string& arguments) {
-  ToolRun run;
-  const std::string command = std::string(TAA_YARDSTICK_PATH) + " " + arguments + " 2>&1";
-  FILE* pipe = popen(command.c_str(), "r");
-  if (!pipe) return run;
-  char buffer[512];
-  while (std::fgets(buffer, sizeof buffer, pipe)) run.output += buffer;
-  const int status = pclose(pipe);
-  run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return run;
-}
-
-std::string readFile(const std::string& path) {
-  std::ifstream file(path);
-  std::stringstream text;
-  text << file.rdbuf();
-  return text.str();
-}
-
-bool contains(const std::string& text, const std::string& part) {
-  return text.find(part) != std::string::npos;
-}
+using namespace taa::yardstick::test;
 
 TEST(YardstickCli, TinySceneEndToEnd) {
   const std::string work = std::string(TAA_TEST_TMPDIR) + "/tiny";
@@ -65,6 +37,10 @@ TEST(YardstickCli, TinySceneEndToEnd) {
   EXPECT_TRUE(contains(page, "| moving_object_3d | classic |")) << page;
   EXPECT_TRUE(contains(page, "`--blend 1`")) << page;
   EXPECT_TRUE(contains(page, "frames 1-8")) << page;
+  EXPECT_TRUE(contains(page, "| PSNR (dB) | SSIM | temporal error | flicker | ghosting |")) << page;
+  // The contact sheet sits beside the page and is linked from it.
+  EXPECT_TRUE(std::filesystem::exists(work + "/quality/moving_object_3d.png"));
+  EXPECT_TRUE(contains(page, "](quality/moving_object_3d.png)")) << page;
 
   // The raw input is its own ghosting reference.
   const auto rawRow = first.output.find("| moving_object_3d | raw |");

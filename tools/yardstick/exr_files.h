@@ -2,6 +2,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "util/image.h"
 
@@ -14,5 +15,9 @@ struct ExrFile {
 
 // Reads a whole EXR as float; throws taa::Error naming the file.
 ExrFile readExr(const std::string& path);
+
+// Reads the named channels of an EXR's first part as float, in the order given (a multilayer
+// file's "ViewLayer.Depth.Z", say); throws taa::Error naming the file and a missing channel.
+Image readExrChannels(const std::string& path, const std::vector<std::string>& channels);
 
 }  // namespace taa::yardstick

@@ -1,14 +1,17 @@
-// taa-yardstick: generates the quality scenes (cached), runs taatool on each with named
-// configurations, scores raw input and outputs against the truth, prints the table and can
-// write docs/QUALITY.md (DESIGN.md section 7). `taa-yardstick --help` lists the options.
+// taa-yardstick: makes the quality scenes (Blender Cycles renders and analytic scenes, both
+// cached), runs taatool on each with named configurations, scores raw input, reference rows
+// and outputs against the truth, prints the tables, writes contact sheets and can write
+// docs/QUALITY.md (DESIGN.md section 7). `taa-yardstick --help` lists the options.
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <ctime>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
-#include <sstream>
 #include <optional>
+#include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
@@ -17,14 +20,15 @@
 #include "scenegen/scene_library.h"
 #include "scenegen/scenes_3d.h"
 #include "taa/error.h"
+#include "util/number_text.h"
+#include "yardstick/analytic_scenes.h"
+#include "yardstick/blender_scenes.h"
 #include "yardstick/configurations.h"
+#include "yardstick/contact_sheet.h"
 #include "yardstick/exr_files.h"
 #include "yardstick/metrics.h"
 #include "yardstick/process.h"
 #include "yardstick/report.h"
-#include "yardstick/scene_cache.h"
-#include "yardstick/sequence_score.h"
-#include "util/number_text.h"
 
 namespace {
 
@@ -32,22 +36,32 @@ namespace fs = std::filesystem;
 using namespace taa::yardstick;
 
 const char* kUsage = R"(usage: taa-yardstick [options]
-  --scenes a,b           scenes to measure (default: the seven 3D scenes)
+  --scenes a,b           scenes to measure: names, "real" (the Blender renders) or "analytic"
+                         (the seven 3D analytic scenes); default: real,analytic
   --configs a,b          configurations from the file to run (default: all of them)
   --config name="flags"  an ad-hoc configuration (repeatable), run after --configs
   --configurations FILE  the named configurations (default: tools/yardstick/configurations.txt)
-  --frames A-B           frames to generate and resolve (default 1-24)
-  --size WxH             scene size (default 320x180)
-  --truth-samples N      truth grid per axis before refinement (default 16; less: tests only)
+  --frames A-B           frames to make and resolve (default 1-24)
+  --size WxH             sequence size (default 320x180)
   --warmup N             frames left out of the means at the start of each shot (default 4)
-  --work DIR             generated scenes (cached) and outputs (default: ./yardstick-work)
-  --doc FILE             also write the page (docs/QUALITY.md) there
+  --work DIR             analytic scenes (cached), outputs, logs (default: ./yardstick-work)
+  --doc FILE             also write the page (docs/QUALITY.md) there, contact sheets beside it
+                         in quality/
+  --sheets DIR           where contact sheets go (default: beside --doc, else <work>/sheets)
   --command TEXT         the command recorded in the page (default: this command line)
+analytic scenes:
+  --truth-samples N      truth grid per axis before refinement (default 16; less: tests only)
   --taatool PATH, --scenegen PATH   the binaries to run (default: the ones built with this)
+real renders (Blender Cycles, samples/blender/render_scene.py):
+  --blender PATH         Blender (default: blender on PATH)
+  --render-cache DIR     where renders are cached (default: $TAA_RENDER_CACHE, else
+                         ~/.cache/taa/blender)
+  --blender-samples N    samples per pixel of the truth (default 1024)
+  --ssaa a,b             SSAA-N reference rows (default 2,4,8,16)
 )";
 
 struct Arguments {
-  std::vector<std::string> scenes;
+  std::vector<std::string> scenes = {"real", "analytic"};
   std::vector<std::string> configNames;
   std::vector<Configuration> adHoc;
   std::string configurationsFile = TAA_YARDSTICK_CONFIGURATIONS;
@@ -57,9 +71,11 @@ struct Arguments {
   int truthSamples = 16;
   std::string work = "yardstick-work";
   std::string doc;
+  std::string sheets;
   std::string command;
   std::string taatool = TAA_YARDSTICK_TAATOOL;
   std::string scenegen = TAA_YARDSTICK_SCENEGEN;
+  BlenderSettings blender;
 };
 
 [[noreturn]] void fail(const std::string& what) { throw std::invalid_argument(what); }
@@ -80,8 +96,16 @@ int parseInt(const std::string& text, const std::string& what) {
   return *value;
 }
 
+std::string defaultRenderCache() {
+  if (const char* cache = std::getenv("TAA_RENDER_CACHE"); cache && *cache) return cache;
+  const char* home = std::getenv("HOME");
+  return (fs::path(home && *home ? home : "/tmp") / ".cache" / "taa" / "blender").string();
+}
+
 Arguments parseArguments(int argc, char** argv) {
   Arguments args;
+  args.blender.script = TAA_YARDSTICK_BLENDER_SCRIPT;
+  args.blender.cache = defaultRenderCache();
   std::vector<std::string> all(argv, argv + argc);
   args.command = commandLine(all);
   for (int k = 1; k < argc; ++k) {
@@ -122,18 +146,35 @@ Arguments parseArguments(int argc, char** argv) {
       args.work = value;
     } else if (flag == "--doc") {
       args.doc = value;
+    } else if (flag == "--sheets") {
+      args.sheets = value;
     } else if (flag == "--command") {
       args.command = value;
     } else if (flag == "--taatool") {
       args.taatool = value;
     } else if (flag == "--scenegen") {
       args.scenegen = value;
+    } else if (flag == "--blender") {
+      args.blender.blender = value;
+    } else if (flag == "--render-cache") {
+      args.blender.cache = value;
+    } else if (flag == "--blender-samples") {
+      args.blender.truthSamples = parseInt(value, "--blender-samples");
+      if (args.blender.truthSamples < 1) fail("--blender-samples must be at least 1");
+    } else if (flag == "--ssaa") {
+      args.blender.ssaa.clear();
+      for (const std::string& n : splitList(value)) {
+        args.blender.ssaa.push_back(parseInt(n, "--ssaa"));
+        if (args.blender.ssaa.back() < 2) fail("--ssaa counts must be at least 2");
+      }
+      std::sort(args.blender.ssaa.begin(), args.blender.ssaa.end());
     } else {
       fail("unknown argument: " + flag);
     }
   }
-  if (args.scenes.empty()) {
-    for (const auto& info : taa::scenes::scene3dList()) args.scenes.push_back(info.name);
+  if (args.sheets.empty()) {
+    args.sheets = args.doc.empty() ? (fs::path(args.work) / "sheets").string()
+                                   : (fs::path(args.doc).parent_path() / "quality").string();
   }
   return args;
 }
@@ -161,39 +202,58 @@ std::vector<Configuration> selectConfigurations(const Arguments& args) {
   return chosen;
 }
 
-std::string framePath(const fs::path& dir, const std::string& stem, int frame) {
-  return taa::scenes::framePath(dir.string(), stem, frame);
-}
+// The scenes to measure, each marked real (Blender) or analytic, in the order given; "real"
+// and "analytic" expand to their sets. Blender is asked for its scenes only when needed.
+struct SceneChoice {
+  std::string name, description;
+  bool real = false;
+};
 
-taa::yardstick::Reference loadReference(const fs::path& dir, const Arguments& args,
-                                        const ScoreOptions& options) {
-  std::vector<ReferenceFrame> frames;
-  for (int f = args.firstFrame; f <= args.lastFrame; ++f) {
-    ReferenceFrame frame;
-    frame.frame = f;
-    const ExrFile truth = readExr(framePath(dir, "truth", f));
-    frame.shot = truth.shot;
-    frame.truth = tonemap(truth.image);
-    frame.raw = tonemap(readExr(framePath(dir, "beauty", f)).image);
-    frame.flow = readExr(framePath(dir, "flow", f)).image;
-    frame.disocclusion = readExr(framePath(dir, "disocclusion", f)).image;
-    frames.push_back(std::move(frame));
+std::vector<SceneChoice> chooseScenes(const Arguments& args, const std::string& log) {
+  std::vector<std::pair<std::string, std::string>> analytic, real;
+  for (const auto& info : taa::scenes::sceneList()) analytic.emplace_back(info.name, info.description);
+  bool needBlender = false;
+  for (const std::string& name : args.scenes) {
+    const bool isAnalytic = name == "analytic" ||
+                            std::any_of(analytic.begin(), analytic.end(),
+                                        [&](const auto& s) { return s.first == name; });
+    needBlender = needBlender || !isAnalytic;
   }
-  return prepareReference(std::move(frames), options);
+  if (needBlender) real = listBlenderScenes(args.blender, log);
+  std::vector<SceneChoice> chosen;
+  for (const std::string& name : args.scenes) {
+    if (name == "analytic") {
+      for (const auto& info : taa::scenes::scene3dList()) {
+        chosen.push_back({info.name, info.description, false});
+      }
+    } else if (name == "real") {
+      for (const auto& [scene, description] : real) chosen.push_back({scene, description, true});
+    } else if (auto a = std::find_if(analytic.begin(), analytic.end(),
+                                     [&](const auto& s) { return s.first == name; });
+               a != analytic.end()) {
+      chosen.push_back({a->first, a->second, false});
+    } else if (auto r = std::find_if(real.begin(), real.end(),
+                                     [&](const auto& s) { return s.first == name; });
+               r != real.end()) {
+      chosen.push_back({r->first, r->second, true});
+    } else {
+      fail("unknown scene " + name);
+    }
+  }
+  return chosen;
 }
 
-// Runs taatool with one configuration on a generated scene; returns the output folder.
-fs::path resolveScene(const Arguments& args, const fs::path& sceneDir, const fs::path& outDir,
+// Runs taatool with one configuration on a prepared scene; returns the output folder.
+fs::path resolveScene(const Arguments& args, const PreparedScene& scene, const fs::path& outDir,
                       const Configuration& config, const std::string& logPath) {
   std::error_code ec;
   fs::remove_all(outDir, ec);
   fs::create_directories(outDir, ec);
-  std::vector<std::string> command = {
-      args.taatool, (sceneDir / "beauty.####.exr").string(),
-      "--depth", (sceneDir / "depth.####.exr").string(),
-      "--motion", (sceneDir / "motion.####.exr").string(),
-      "--frames", std::to_string(args.firstFrame) + "-" + std::to_string(args.lastFrame),
-      "-o", (outDir / "resolved.####.exr").string(), "-d", "float", "-q"};
+  std::vector<std::string> command = {args.taatool};
+  command.insert(command.end(), scene.taatoolInputs.begin(), scene.taatoolInputs.end());
+  command.insert(command.end(),
+                 {"--frames", std::to_string(args.firstFrame) + "-" + std::to_string(args.lastFrame),
+                  "-o", (outDir / "resolved.####.exr").string(), "-d", "float", "-q"});
   command.insert(command.end(), config.flags.begin(), config.flags.end());
   std::ofstream(logPath, std::ios::app) << "$ " << commandLine(command) << "\n";
   if (runProcess(command, logPath) != 0) {
@@ -226,12 +286,36 @@ std::string utcNow() {
   return text;
 }
 
+// Scores one sequence, adds its row, and keeps the contact sheet's frame of it.
+struct SceneRows {
+  std::vector<ResultRow> rows;
+  std::vector<SheetTile> tiles;
+  std::vector<std::pair<int, double>> ladder;  // spp -> PSNR: raw and the SSAA rows
+  std::size_t sheetFrame = 0;
+};
+
+void addRow(SceneRows& out, const PreparedScene& scene, const std::string& name,
+            const std::vector<taa::Image>& frames) {
+  ResultRow row{scene.name, name, score(scene.reference, frames)};
+  if (!out.ladder.empty()) row.equivalentSpp = equivalentSpp(row.scores.psnr, out.ladder);
+  out.rows.push_back(row);
+  out.tiles.push_back({name, frames[out.sheetFrame]});
+}
+
+// The contact sheet's frame: two thirds in, where history has settled and motion is fast.
+std::size_t sheetFrameOf(const Reference& reference) {
+  std::size_t k = reference.frames.size() * 2 / 3;
+  while (k + 1 < reference.frames.size() && !reference.measured[k]) ++k;
+  return k;
+}
+
 int run(const Arguments& args) {
   const auto start = std::chrono::steady_clock::now();
   const std::vector<Configuration> configurations = selectConfigurations(args);
   const fs::path work = fs::absolute(args.work);
   fs::create_directories(work);
   const ScoreOptions options{args.warmup, 4};
+  const std::vector<SceneChoice> scenes = chooseScenes(args, (work / "blender.log").string());
 
   RunDescription description;
   description.command = args.command;
@@ -243,63 +327,136 @@ int run(const Arguments& args) {
   description.warmup = args.warmup;
   description.ghostFrames = options.ghostFrames;
   description.configurations = configurations;
+  description.sceneCount = int(scenes.size());
 
-  std::vector<std::string> order = {kRawRow};
-  for (const Configuration& c : configurations) order.push_back(c.name);
-  std::vector<ResultRow> rows;
-  for (const std::string& scene : args.scenes) {
-    for (const auto& info : taa::scenes::sceneList()) {
-      if (info.name == scene) description.scenes.emplace_back(scene, info.description);
-    }
-    const fs::path sceneDir = work / "scenes" / scene;
-    const std::string log = (work / (scene + ".log")).string();
+  std::string counts;
+  for (int n : args.blender.ssaa) counts += (counts.empty() ? "" : ", ") + std::to_string(n);
+  ReportSection realSection{
+      "Real renders (Blender Cycles)",
+      "Rendered by Debian's Blender with Cycles on the CPU by `samples/blender/render_scene.py` "
+      "(procedural scenes, no assets; `samples/README.md`, \"Blender scenes\"), cached in `" +
+          std::string("$TAA_RENDER_CACHE") +
+          "` (default `~/.cache/taa/blender`). The input is what Cycles writes: one multilayer EXR a frame (half "
+          "`ViewLayer.Combined`, float `Depth` and `Vector`), 1 sample per pixel with a BOX "
+          "filter of width 1 at the frame's Halton jitter (a lens shift), read by taatool "
+          "with `--preset cycles --camera-sidecar camera.json`. Truth: " +
+          std::to_string(args.blender.truthSamples) +
+          " samples per pixel, unjittered. ssaa-N rows: the mean of N 1-spp renders at the "
+          "Halton offsets 1..N (N = " + counts +
+          "), the supersampling a resolve is read against. Emission and direct light only (no "
+          "bounces, radius-0 lights), so aliasing is the only error.\n",
+      {}, {}};
+  ReportSection analyticSection{
+      "Analytic scenes",
+      "Ray-cast on the CPU by `taa-scenegen` (`samples/scenegen/`) with exact depth, motion and "
+      "disocclusion; truth adaptively supersampled from a " + std::to_string(args.truthSamples) +
+          "x" + std::to_string(args.truthSamples) +
+          " jittered grid per pixel. taatool reads beauty, depth and motion as separate files "
+          "(`--depth`, `--motion`).\n",
+      {}, {}};
+  std::vector<ResultRow> realRows, analyticRows;
+  std::vector<std::string> realOrder = {kRawRow}, analyticOrder = {kRawRow};
+  for (int n : args.blender.ssaa) realOrder.push_back("ssaa-" + std::to_string(n));
+  for (const Configuration& c : configurations) {
+    realOrder.push_back(c.name);
+    analyticOrder.push_back(c.name);
+  }
+
+  for (const SceneChoice& choice : scenes) {
+    const std::string log = (work / (choice.name + ".log")).string();
     fs::remove(log);
-    const auto generateStart = std::chrono::steady_clock::now();
-    const bool generated = ensureScene(
-        args.scenegen,
-        {scene, args.firstFrame, args.lastFrame, args.width, args.height, args.truthSamples},
-        sceneDir.string(), log);
-    const std::chrono::duration<double> generateSeconds =
-        std::chrono::steady_clock::now() - generateStart;
-    std::printf("%s: %s (%.1f s)\n", scene.c_str(), generated ? "generated" : "cached",
-                generateSeconds.count());
-    description.generationSeconds += generateSeconds.count();
-    description.cachedScenes += generated ? 0 : 1;
+    const PreparedScene scene =
+        choice.real
+            ? prepareBlenderScene(args.blender,
+                                  {choice.name, args.firstFrame, args.lastFrame, args.width,
+                                   args.height},
+                                  choice.description, log, options)
+            : prepareAnalyticScene(args.scenegen,
+                                   {choice.name, args.firstFrame, args.lastFrame, args.width,
+                                    args.height, args.truthSamples},
+                                   (work / "scenes" / choice.name).string(), log, options);
+    std::printf("%s: %s (%.1f s)\n", scene.name.c_str(),
+                scene.made ? (choice.real ? "rendered" : "generated") : "cached", scene.seconds);
     std::fflush(stdout);
+    description.preparationSeconds += scene.seconds;
+    description.madeScenes += scene.made ? 1 : 0;
 
-    const Reference reference = loadReference(sceneDir, args, options);
-    description.measuredFrames.emplace_back(scene, reference.measuredFrames);
-    std::vector<taa::Image> raw;
-    for (const ReferenceFrame& frame : reference.frames) raw.push_back(frame.raw);
-    rows.push_back({scene, kRawRow, score(reference, raw)});
-
+    SceneRows out;
+    out.sheetFrame = sheetFrameOf(scene.reference);
+    std::vector<taa::Image> raw, truth;
+    for (const ReferenceFrame& frame : scene.reference.frames) {
+      raw.push_back(frame.raw);
+      truth.push_back(frame.truth);
+    }
+    if (!scene.fixedRows.empty()) out.ladder.push_back({1, score(scene.reference, raw).psnr});
+    for (const auto& fixed : scene.fixedRows) {
+      out.ladder.push_back({fixed.samplesPerPixel, score(scene.reference, fixed.frames).psnr});
+    }
+    addRow(out, scene, kRawRow, raw);
+    for (const auto& fixed : scene.fixedRows) addRow(out, scene, fixed.name, fixed.frames);
     for (const Configuration& config : configurations) {
       const auto resolveStart = std::chrono::steady_clock::now();
       const fs::path outDir =
-          resolveScene(args, sceneDir, work / "runs" / scene / config.name, config, log);
+          resolveScene(args, scene, work / "runs" / scene.name / config.name, config, log);
       std::vector<taa::Image> output;
       for (int f = args.firstFrame; f <= args.lastFrame; ++f) {
-        output.push_back(tonemap(readExr(framePath(outDir, "resolved", f)).image));
+        output.push_back(
+            tonemap(readExr(taa::scenes::framePath(outDir.string(), "resolved", f)).image));
       }
-      rows.push_back({scene, config.name, score(reference, output)});
+      addRow(out, scene, config.name, output);
       const std::chrono::duration<double> seconds =
           std::chrono::steady_clock::now() - resolveStart;
-      std::printf("%s: %s resolved and scored (%.1f s)\n", scene.c_str(), config.name.c_str(),
-                  seconds.count());
+      std::printf("%s: %s resolved and scored (%.1f s)\n", scene.name.c_str(),
+                  config.name.c_str(), seconds.count());
       std::fflush(stdout);
     }
+
+    // The contact sheet: every row's frame, the truth, and the default's (else the last
+    // configuration's) error.
+    const taa::Image& truthFrame = truth[out.sheetFrame];
+    const SheetTile* heatOf = &out.tiles.back();
+    for (const SheetTile& tile : out.tiles) heatOf = tile.label == "default" ? &tile : heatOf;
+    std::vector<SheetTile> tiles = out.tiles;
+    tiles.push_back({"truth", truthFrame});
+    tiles.push_back({"|" + heatOf->label + " - truth| x10", errorHeatMap(heatOf->image, truthFrame, 0.1f)});
+    const Crop crop = worstWindow(raw[out.sheetFrame], truthFrame, (args.width + 1) / 2,
+                                  (args.height + 1) / 2);
+    const fs::path sheet = fs::path(args.sheets) / (scene.name + ".png");
+    const std::string warning = writeContactSheet(sheet.string(), tiles, crop, 6);
+    if (!warning.empty()) std::fprintf(stderr, "taa-yardstick: %s\n", warning.c_str());
+
+    ReportSection& section = choice.real ? realSection : analyticSection;
+    const std::string link =
+        args.doc.empty() ? sheet.string()
+                         : fs::relative(sheet, fs::absolute(args.doc).parent_path()).string();
+    section.scenes.push_back({scene.name, scene.description, link,
+                              "frame " + std::to_string(scene.reference.frames[out.sheetFrame].frame),
+                              scene.reference.measuredFrames});
+    std::vector<ResultRow>& rows = choice.real ? realRows : analyticRows;
+    rows.insert(rows.end(), out.rows.begin(), out.rows.end());
   }
-  const std::string table = formatTable(rows, order);
-  std::printf("\n%s", table.c_str());
+  std::string tables;
+  if (!realRows.empty()) {
+    realSection.table = formatTable(realRows, realOrder);
+    tables += "\nReal renders\n" + realSection.table;
+    description.sections.push_back(realSection);
+  }
+  if (!analyticRows.empty()) {
+    analyticSection.table = formatTable(analyticRows, analyticOrder);
+    tables += "\nAnalytic scenes\n" + analyticSection.table;
+    description.sections.push_back(analyticSection);
+  }
+  std::printf("%s", tables.c_str());
   const std::chrono::duration<double> seconds = std::chrono::steady_clock::now() - start;
   description.seconds = seconds.count();
   if (!args.doc.empty()) {
     std::ofstream page(args.doc);
-    page << formatQualityPage(description, table);
+    page << formatQualityPage(description);
     if (!page) throw taa::Error("cannot write the page", {args.doc});
     std::printf("\nwrote %s\n", args.doc.c_str());
   }
-  std::printf("taa-yardstick: %zu scenes, %zu configurations, %.0f s\n", args.scenes.size(),
+  std::printf("contact sheets in %s\n", args.sheets.c_str());
+  std::printf("taa-yardstick: %zu scenes, %zu configurations, %.0f s\n", scenes.size(),
               configurations.size(), seconds.count());
   return 0;
 }

@@ -145,6 +145,30 @@ MeanAccumulator warpedChange(const Image& now, const Image& before, const Image&
   return result;
 }
 
+MeanAccumulator temporalError(const Image& now, const Image& before, const Image& truthNow,
+                              const Image& truthBefore, const Image& flow,
+                              const Image& disocclusion) {
+  requireSameSize(now, before, "temporal error");
+  requireSameSize(now, truthNow, "temporal error");
+  requireSameSize(now, truthBefore, "temporal error");
+  MeanAccumulator result;
+  for (int y = 0; y < now.height; ++y) {
+    for (int x = 0; x < now.width; ++x) {
+      if (disocclusion.at(x, y)[0] != 0.0f) continue;
+      const double px = x + 0.5 + flow.at(x, y)[0], py = y + 0.5 + flow.at(x, y)[1];
+      if (px < 0.0 || py < 0.0 || px >= now.width || py >= now.height) continue;
+      double error = 0.0;
+      for (int c = 0; c < 3; ++c) {
+        const double change = double(now.at(x, y)[c]) - bilinear(before, px, py, c);
+        const double truthChange = double(truthNow.at(x, y)[c]) - bilinear(truthBefore, px, py, c);
+        error += std::fabs(change - truthChange);
+      }
+      result.add(error / 3.0);
+    }
+  }
+  return result;
+}
+
 MeanAccumulator maskedAbsError(const Image& a, const Image& b, const Image& mask) {
   requireSameSize(a, b, "error");
   MeanAccumulator result;

@@ -45,6 +45,16 @@ struct MeanAccumulator {
 MeanAccumulator warpedChange(const Image& now, const Image& before, const Image& flow,
                              const Image& disocclusion);
 
+// Temporal error: how far the output's motion-compensated frame-to-frame change is from the
+// truth's. Per pixel whose surface was visible in both frames (disocclusion 0, previous
+// position on screen), the RGB mean of |(now(p) - before(p + flow)) - (truthNow(p) -
+// truthBefore(p + flow))|, the previous frames sampled bilinearly. Zero for the truth itself
+// whatever the scene does, so it stays meaningful on static shots where the truth's own change
+// (the flicker ratio's divisor) is near zero.
+MeanAccumulator temporalError(const Image& now, const Image& before, const Image& truthNow,
+                              const Image& truthBefore, const Image& flow,
+                              const Image& disocclusion);
+
 // RGB mean of |a - b| over the pixels where mask > 0 (every pixel when mask is empty).
 MeanAccumulator maskedAbsError(const Image& a, const Image& b, const Image& mask);
 

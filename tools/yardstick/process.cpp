@@ -21,7 +21,7 @@ int runProcess(const std::vector<std::string>& argv, const std::string& logPath)
                                    O_WRONLY | O_CREAT | O_APPEND, 0644);
   posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
   pid_t pid = 0;
-  const int started = posix_spawn(&pid, args[0], &actions, nullptr, args.data(), environ);
+  const int started = posix_spawnp(&pid, args[0], &actions, nullptr, args.data(), environ);
   posix_spawn_file_actions_destroy(&actions);
   if (started != 0) return -1;
   int status = 0;

@@ -6,8 +6,9 @@
 
 namespace taa::yardstick {
 
-// Runs argv[0] with its arguments, stdout and stderr appended to `logPath`; returns the exit
-// status (-1 when it could not be started or did not exit normally).
+// Runs argv[0] (found on PATH when it has no slash) with its arguments, stdout and stderr
+// appended to `logPath`; returns the exit status (-1 when it could not be started or did not
+// exit normally).
 int runProcess(const std::vector<std::string>& argv, const std::string& logPath);
 
 // One printable line for a command (arguments with spaces quoted), for logs and docs.

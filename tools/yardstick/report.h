@@ -1,7 +1,9 @@
-// The yardstick's results table (markdown) and the docs/QUALITY.md page around it.
+// The yardstick's results tables (markdown) and the docs/QUALITY.md page around them.
 #pragma once
 
+#include <cmath>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "yardstick/configurations.h"
@@ -14,32 +16,53 @@ inline const char* kRawRow = "raw";
 
 struct ResultRow {
   std::string scene;
-  std::string configuration;  // kRawRow or a configuration's name
+  std::string configuration;  // kRawRow, a fixed row ("ssaa-4") or a configuration's name
   Scores scores;
+  double equivalentSpp = std::nan("");  // samples per pixel of equal PSNR (NaN: no ladder)
 };
 
+// The samples per pixel whose SSAA reference would score `psnr`: interpolated in log2(spp)
+// between the rungs of `ladder` (spp -> PSNR, raw input = 1 spp, ascending spp). Below the
+// first rung: 0 (shown "<1"); above the last: +inf (shown ">N").
+double equivalentSpp(double psnr, const std::vector<std::pair<int, double>>& ladder);
+
 // One row per scene and configuration in the given order, then one "mean" row per
-// configuration (NaN figures are left out of the means and printed as "-").
+// configuration (NaN figures are left out of the means and printed as "-"). The "spp" column
+// appears when any row has an equivalent spp.
 std::string formatTable(const std::vector<ResultRow>& rows,
                         const std::vector<std::string>& configurationOrder);
 
-// What the page records besides the table.
+// A part of the page: the real renders or the analytic scenes.
+struct ReportSection {
+  std::string title;
+  std::string introduction;  // markdown paragraphs
+  struct Scene {
+    std::string name, description;
+    std::string sheet;      // link to the contact sheet, relative to the page
+    std::string sheetNote;  // which frame it shows
+    int measuredFrames = 0;
+  };
+  std::vector<Scene> scenes;
+  std::string table;
+};
+
+// What the page records besides the tables.
 struct RunDescription {
-  std::string command;       // the exact command that produced the table
+  std::string command;       // the exact command that produced the tables
   std::string date;          // UTC, ISO 8601
   std::string machine;       // GL renderer and CPU count
   std::string size;          // e.g. 320x180
   std::string frames;        // e.g. 1-24
   int warmup = 4;
   int ghostFrames = 4;
-  std::vector<std::pair<std::string, int>> measuredFrames;  // scene -> frames in the means
-  std::vector<std::pair<std::string, std::string>> scenes;  // scene -> description
   std::vector<Configuration> configurations;
   double seconds = 0.0;            // wall time of the whole run
-  double generationSeconds = 0.0;  // of that, generating scenes
-  int cachedScenes = 0;            // scenes found generated already
+  double preparationSeconds = 0.0;  // of that, generating and rendering scenes
+  int madeScenes = 0;              // scenes generated or rendered by this run
+  int sceneCount = 0;
+  std::vector<ReportSection> sections;
 };
 
-std::string formatQualityPage(const RunDescription& run, const std::string& table);
+std::string formatQualityPage(const RunDescription& run);
 
 }  // namespace taa::yardstick

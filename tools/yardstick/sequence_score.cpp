@@ -19,6 +19,18 @@ MeanAccumulator flickerOf(const Reference& reference, const std::vector<Image>& 
   return total;
 }
 
+// Pooled temporal error of a sequence against the truth over the measured frames.
+MeanAccumulator temporalErrorOf(const Reference& reference, const std::vector<Image>& sequence) {
+  MeanAccumulator total;
+  for (std::size_t k = 1; k < reference.frames.size(); ++k) {
+    if (!reference.measured[k]) continue;
+    const ReferenceFrame& frame = reference.frames[k];
+    total.add(temporalError(sequence[k], sequence[k - 1], frame.truth,
+                            reference.frames[k - 1].truth, frame.flow, frame.disocclusion));
+  }
+  return total;
+}
+
 MeanAccumulator ghostErrorOf(const Reference& reference, const std::vector<Image>& sequence) {
   MeanAccumulator total;
   for (std::size_t k = 0; k < reference.frames.size(); ++k) {
@@ -75,6 +87,7 @@ Scores score(const Reference& reference, const std::vector<Image>& output) {
   Scores scores;
   scores.psnr = psnrMean.mean();
   scores.ssim = ssimMean.mean();
+  scores.temporal = temporalErrorOf(reference, output).mean();
   scores.flicker = ratio(flickerOf(reference, output), reference.truthFlicker);
   scores.ghosting = ratio(ghostErrorOf(reference, output), reference.rawGhostError);
   return scores;

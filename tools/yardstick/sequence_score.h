@@ -39,6 +39,7 @@ Reference prepareReference(std::vector<ReferenceFrame> frames, const ScoreOption
 struct Scores {
   double psnr = 0.0;      // dB, mean over measured frames
   double ssim = 0.0;      // mean over measured frames
+  double temporal = 0.0;  // pooled temporal error (metrics.h: temporalError; 0 = the truth's)
   double flicker = 0.0;   // pooled motion-compensated change / the truth's (1 = as stable)
   double ghosting = 0.0;  // pooled error in recently disoccluded pixels / the raw input's;
                           // NaN when no measured frame has any
