@@ -46,6 +46,36 @@ struct ColorOptions {
   std::string colorspaceOut;
 };
 
+// How frames are combined (DESIGN.md section 4).
+enum class ResolveMode {
+  History,  // the recursive resolve: each frame blended into a reprojected history image
+  Window,   // frame t rebuilt from the raw samples of frames t-K..t+K, each carried along its
+            // own motion; every frame independent of the others
+};
+
+// The window resolve's settings (used when mode is Window).
+struct WindowOptions {
+  // K: frames used on each side of the resolved frame (2K+1 in all), 0..16. The window stops
+  // at the shot's ends (gaps, reset frames). Memory grows with it: 2K+1 frames are kept.
+  int radius = 8;
+  // Pixels: standard deviation of the Gaussian weighting a carried sample by its distance to
+  // the output pixel's centre. Smaller is sharper and noisier. Typical 0.3 .. 0.6.
+  float sigma = 0.35f;
+  // Frames: temporal weight 1 / (1 + (distance / falloff)^2); 0 weighs every frame alike.
+  float falloff = 0.0f;
+  // Colour consistency: a carried sample farther than this from the resolved frame's own 3x3
+  // colour box (YCoCg, working space, relative to the box's size plus a floor) loses its
+  // weight, so shading that changes over the window (moving lights, shadows) does not smear.
+  // Larger keeps more samples. 0 turns the test off.
+  float colourTolerance = 0.5f;
+  // Pixels: a sample counts as static (carried by exact camera reprojection) when its motion
+  // vector agrees with the camera's motion within this; otherwise its vectors are chained.
+  float staticTolerance = 0.25f;
+  // Weight of the resolved frame's own filtered reconstruction (the history mode's unjitter),
+  // added as one more sample: it is what a pixel that gathers little falls back to.
+  float reconstructionWeight = 0.1f;
+};
+
 enum class Reconstruction { Centre, BlackmanHarris, Lanczos2 };
 enum class MotionDilation { Centre, Plus, Box3x3 };
 enum class CameraMotion { Vectors, Fill, PreferCamera, Camera };
@@ -57,6 +87,11 @@ enum class Neighbourhood { Plus5, Box9 };
 // The resolve's stages (DESIGN.md section 4), in pipeline order. Defaults are chosen from the
 // quality yardstick (docs/QUALITY.md), not by eye.
 struct ResolveOptions {
+  // How frames are combined: the recursive history resolve, or the window resolve. The stages
+  // below marked (history) apply to the history resolve only; `window` to the window resolve.
+  ResolveMode mode = ResolveMode::History;
+  WindowOptions window;
+
   // --- unjitter
   // Filter reconstructing the current frame at pixel centres from the 3x3 jittered
   // samples: Centre (the pixel's own sample, no filter), BlackmanHarris (soft, no ringing),

@@ -293,6 +293,10 @@ void resolveFrameList(CommandLine& cl) {
   } else {
     cl.job.frames = {0};  // a single file: frame number 0 for jitter unless --frames says
   }
+  // The window resolve reads the frames around each resolved one that exist on disk.
+  if (cl.job.resolve.mode == ResolveMode::Window && io::hasFramePlaceholder(pattern)) {
+    cl.job.availableFrames = availableInputFrames(cl.job.layout);
+  }
 }
 
 // `words` wrapped to lines of at most `width` columns, each after `indent` spaces.

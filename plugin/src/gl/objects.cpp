@@ -165,33 +165,82 @@ void Texture::bind(int unit) const {
   gl.BindTexture(GL_TEXTURE_2D, handle_.id());
 }
 
+// --- TextureArray ------------------------------------------------------------------------
+
+TextureArray::TextureArray(const Functions& gl, int width, int height, int layers,
+                           GLenum internalFormat)
+    : width_(width), height_(height), layers_(layers) {
+  if (width <= 0 || height <= 0 || layers <= 0) {
+    throw Error("texture array size " + std::to_string(width) + "x" + std::to_string(height) +
+                "x" + std::to_string(layers) + " is not positive");
+  }
+  const GLenum format = baseFormat(internalFormat);
+  GLuint id = 0;
+  gl.GenTextures(1, &id);
+  handle_ = Handle<TextureDeleter>(&gl, id);
+  gl.BindTexture(GL_TEXTURE_2D_ARRAY, id);
+  gl.TexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  gl.TexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  gl.TexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  gl.TexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  gl.TexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAX_LEVEL, 0);
+  gl.TexImage3D(GL_TEXTURE_2D_ARRAY, 0, static_cast<GLint>(internalFormat), width, height, layers,
+                0, format, GL_FLOAT, nullptr);
+  checkError(gl, ("creating a " + std::to_string(width) + "x" + std::to_string(height) + "x" +
+                  std::to_string(layers) + " texture array of format " +
+                  hexEnum(internalFormat)).c_str());
+}
+
+void TextureArray::upload(int layer, const void* pixels, int components, GLenum type) {
+  if (!handle_) throw Error("texture array upload: the texture was never created");
+  if (!pixels) throw Error("texture array upload: no pixel data");
+  if (layer < 0 || layer >= layers_) throw Error("texture array upload: no layer " + std::to_string(layer));
+  const Functions& gl = handle_.gl();
+  gl.BindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
+  gl.PixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  gl.BindTexture(GL_TEXTURE_2D_ARRAY, handle_.id());
+  gl.TexSubImage3D(GL_TEXTURE_2D_ARRAY, 0, 0, 0, layer, width_, height_, 1,
+                   formatOfComponents(components), type, pixels);
+  checkError(gl, "uploading a texture array layer");
+}
+
+void TextureArray::bind(int unit) const {
+  const Functions& gl = handle_.gl();
+  gl.ActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(unit));
+  gl.BindTexture(GL_TEXTURE_2D_ARRAY, handle_.id());
+}
+
 // --- Framebuffer -------------------------------------------------------------------------
 
 Framebuffer::Framebuffer(const Functions& gl, const Texture& colorAttachment)
-    : Framebuffer(gl, std::vector<const Texture*>{&colorAttachment}) {}
+    : Framebuffer(gl, std::vector<Attachment>{&colorAttachment}) {}
 
-Framebuffer::Framebuffer(const Functions& gl, const std::vector<const Texture*>& colorAttachments) {
+Framebuffer::Framebuffer(const Functions& gl, const std::vector<Attachment>& colorAttachments) {
   const auto first = std::find_if(colorAttachments.begin(), colorAttachments.end(),
-                                  [](const Texture* texture) { return texture != nullptr; });
+                                  [](const Attachment& a) { return a.present; });
   if (first == colorAttachments.end()) throw Error("framebuffer: no colour attachment given");
-  width_ = (*first)->width();
-  height_ = (*first)->height();
+  width_ = first->width;
+  height_ = first->height;
   GLuint id = 0;
   gl.GenFramebuffers(1, &id);
   handle_ = Handle<FramebufferDeleter>(&gl, id);
   gl.BindFramebuffer(GL_FRAMEBUFFER, id);
   std::vector<GLenum> drawBuffers;
-  for (const Texture* texture : colorAttachments) {
-    if (!texture) {  // nothing at this location: the shader's output there is dropped
+  for (const Attachment& texture : colorAttachments) {
+    if (!texture.present) {  // nothing at this location: the shader's output there is dropped
       drawBuffers.push_back(GL_NONE);
       continue;
     }
-    if (!texture->id()) throw Error("framebuffer: a colour texture was never created");
-    if (texture->width() != width_ || texture->height() != height_) {
+    if (!texture.id) throw Error("framebuffer: a colour texture was never created");
+    if (texture.width != width_ || texture.height != height_) {
       throw Error("framebuffer: colour attachments differ in size");
     }
     const GLenum attachment = GL_COLOR_ATTACHMENT0 + GLenum(drawBuffers.size());
-    gl.FramebufferTexture2D(GL_FRAMEBUFFER, attachment, GL_TEXTURE_2D, texture->id(), 0);
+    if (texture.layer >= 0) {
+      gl.FramebufferTextureLayer(GL_FRAMEBUFFER, attachment, texture.id, 0, texture.layer);
+    } else {
+      gl.FramebufferTexture2D(GL_FRAMEBUFFER, attachment, GL_TEXTURE_2D, texture.id, 0);
+    }
     drawBuffers.push_back(attachment);
   }
   // Draw and read buffers are per-framebuffer state.
@@ -305,6 +354,26 @@ void Program::setMatrix4(const char* name, const float* columnMajor16) const {
 void Program::setArray(const char* name, const float* values, int count) const {
   const GLint at = location(name);
   if (at >= 0) handle_.gl().ProgramUniform1fv(handle_.id(), at, count, values);
+}
+
+void Program::setIntArray(const char* name, const int* values, int count) const {
+  const GLint at = location(name);
+  if (at >= 0) handle_.gl().ProgramUniform1iv(handle_.id(), at, count, values);
+}
+
+void Program::setVec2Array(const char* name, const float* xy, int count) const {
+  const GLint at = location(name);
+  if (at >= 0) handle_.gl().ProgramUniform2fv(handle_.id(), at, count, xy);
+}
+
+void Program::setVec4Array(const char* name, const float* xyzw, int count) const {
+  const GLint at = location(name);
+  if (at >= 0) handle_.gl().ProgramUniform4fv(handle_.id(), at, count, xyzw);
+}
+
+void Program::setMatrix4Array(const char* name, const float* columnMajor, int count) const {
+  const GLint at = location(name);
+  if (at >= 0) handle_.gl().ProgramUniformMatrix4fv(handle_.id(), at, count, GL_FALSE, columnMajor);
 }
 
 // --- FullscreenTriangle ------------------------------------------------------------------

@@ -83,15 +83,54 @@ class Texture {
   int width_ = 0, height_ = 0;
 };
 
+// A 2D array texture (nearest filtering, clamp to edge): `layers` images of one size and
+// format, rows uploaded like Texture's (row 0 = raster row 0). The window resolve keeps its
+// ring of frames in these, one layer a frame, so one shader pass reads them all.
+class TextureArray {
+ public:
+  TextureArray() = default;
+  TextureArray(const Functions& gl, int width, int height, int layers, GLenum internalFormat);
+
+  // Uploads one layer: width*height pixels of `components` samples of `type`, tightly packed.
+  void upload(int layer, const void* pixels, int components, GLenum type);
+  void bind(int unit) const;
+
+  GLuint id() const { return handle_.id(); }
+  int width() const { return width_; }
+  int height() const { return height_; }
+  int layers() const { return layers_; }
+
+ private:
+  Handle<TextureDeleter> handle_;
+  int width_ = 0, height_ = 0, layers_ = 0;
+};
+
+// What a framebuffer draws into at one location: a texture, or one layer of a texture array.
+// Converts implicitly from a Texture pointer (nullptr: nothing attached there).
+struct Attachment {
+  Attachment(const Texture* texture)  // NOLINT: implicit on purpose
+      : id(texture ? texture->id() : 0),
+        width(texture ? texture->width() : 0),
+        height(texture ? texture->height() : 0),
+        present(texture != nullptr) {}
+  Attachment(const TextureArray& array, int arrayLayer)
+      : id(array.id()), width(array.width()), height(array.height()), layer(arrayLayer),
+        present(true) {}
+  GLuint id = 0;
+  int width = 0, height = 0;
+  int layer = -1;  // >= 0: a layer of an array texture
+  bool present = false;
+};
+
 // A framebuffer object with one or more colour attachments of one size; fragment output
 // location i writes attachment i. Throws taa::Error if incomplete.
 class Framebuffer {
  public:
   Framebuffer() = default;
   Framebuffer(const Functions& gl, const Texture& colorAttachment);
-  // Attachment i receives the fragment shader's output at location i; a null entry leaves that
-  // location unattached (its output is dropped).
-  Framebuffer(const Functions& gl, const std::vector<const Texture*>& colorAttachments);
+  // Attachment i receives the fragment shader's output at location i; an absent entry leaves
+  // that location unattached (its output is dropped).
+  Framebuffer(const Functions& gl, const std::vector<Attachment>& colorAttachments);
 
   // Binds for drawing and sets the viewport to the attachments' size.
   void bind() const;
@@ -144,6 +183,10 @@ class Program {
   void set(const char* name, float x, float y, float z, float w) const;
   void setMatrix4(const char* name, const float* columnMajor16) const;
   void setArray(const char* name, const float* values, int count) const;  // float name[count]
+  void setIntArray(const char* name, const int* values, int count) const;  // int name[count]
+  void setVec2Array(const char* name, const float* xy, int count) const;   // vec2 name[count]
+  void setVec4Array(const char* name, const float* xyzw, int count) const;  // vec4 name[count]
+  void setMatrix4Array(const char* name, const float* columnMajor, int count) const;
 
   GLuint id() const { return handle_.id(); }
 

@@ -83,6 +83,17 @@ Entry numberOption(OptionInfo info, float lo, float hi, float ResolveOptions::*f
   return e;
 }
 
+// A number of the window resolve's settings (ResolveOptions::window).
+Entry windowNumberOption(OptionInfo info, float lo, float hi, float WindowOptions::*field) {
+  info.values = formatNumber(lo) + ".." + (std::isinf(hi) ? std::string("") : formatNumber(hi));
+  Entry e{info, {}, {}};
+  e.set = [field, lo, hi, name = info.name](ResolveOptions& o, const std::string& v) {
+    o.window.*field = parseNumber(name, v, lo, hi);
+  };
+  e.get = [field](const ResolveOptions& o) { return formatNumber(o.window.*field); };
+  return e;
+}
+
 Entry switchOption(OptionInfo info, bool ResolveOptions::*field) {
   info.values = "on|off";
   Entry e{info, {}, {}};
@@ -111,6 +122,46 @@ const float kNoLimit = INFINITY;
 
 std::vector<Entry> makeEntries() {
   std::vector<Entry> entries;
+  entries.push_back(enumOption<ResolveMode>(
+      {"mode", "Mode", "", "", "history: each frame blended into a reprojected history "
+       "(recursive, game-engine TAA); window: each frame rebuilt from the raw samples of frames "
+       "t-K..t+K carried along their own motion (offline; frames independent, any chunking "
+       "gives the same frames)"},
+      {{"history", ResolveMode::History}, {"window", ResolveMode::Window}},
+      &ResolveOptions::mode));
+  {
+    Entry e{{"window", "Mode", "0..16", "", "window mode: K, the frames used on each side of "
+             "the resolved frame (2K+1 kept in memory); stops at the shot's ends"}, {}, {}};
+    e.set = [](ResolveOptions& o, const std::string& v) {
+      const int k = parseInteger("window", v, 0);
+      if (k > 16) reject("window", v, "an integer in [0, 16]");
+      o.window.radius = k;
+    };
+    e.get = [](const ResolveOptions& o) { return std::to_string(o.window.radius); };
+    entries.push_back(e);
+  }
+  entries.push_back(windowNumberOption(
+      {"window-sigma", "Mode", "", "", "window mode: pixels, the Gaussian weighting a carried "
+       "sample by its distance to the pixel centre; smaller is sharper and noisier"},
+      0.05f, 4.0f, &WindowOptions::sigma));
+  entries.push_back(windowNumberOption(
+      {"window-falloff", "Mode", "", "", "window mode: frames, weight 1/(1+(distance/falloff)^2) "
+       "by distance in time (0: every frame alike)"},
+      0.0f, kNoLimit, &WindowOptions::falloff));
+  entries.push_back(windowNumberOption(
+      {"window-colour-tolerance", "Mode", "", "", "window mode: how far outside the frame's own "
+       "3x3 colour box a carried sample may be (relative); smaller keeps moving shadows and "
+       "lights sharp, larger keeps more samples (0: off)"},
+      0.0f, kNoLimit, &WindowOptions::colourTolerance));
+  entries.push_back(windowNumberOption(
+      {"window-static-tolerance", "Mode", "", "", "window mode: pixels within which a sample's "
+       "vector must agree with the camera for exact camera reprojection; others follow their "
+       "vectors"},
+      0.0f, kNoLimit, &WindowOptions::staticTolerance));
+  entries.push_back(windowNumberOption(
+      {"window-reconstruction-weight", "Mode", "", "", "window mode: weight of the frame's own "
+       "filtered reconstruction, the fallback of pixels that gather little"},
+      0.0f, kNoLimit, &WindowOptions::reconstructionWeight));
   entries.push_back(enumOption<Reconstruction>(
       {"reconstruction", "Unjitter", "", "", "filter rebuilding each frame at pixel centres: "
        "blackman-harris is soft, lanczos2 sharper with slight ringing, centre takes the pixel's "

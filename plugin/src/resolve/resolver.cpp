@@ -216,7 +216,7 @@ struct Resolver::Impl {
     const bool withOutput = fusedOutput(options);
     debug = withDebug ? gl::Texture(gl, width, height, GL_RGBA32F) : gl::Texture();
     for (int i = 0; i < 2; ++i) {
-      std::vector<const gl::Texture*> attachments = {&history[i], &historyState[i],
+      std::vector<gl::Attachment> attachments = {&history[i], &historyState[i],
                                                      withDebug ? &debug : nullptr};
       if (withOutput) attachments.push_back(&output);
       resolveTarget[i] = gl::Framebuffer(gl, attachments);

@@ -1,18 +1,21 @@
 #include "resolve/sequence_job.h"
 
 #include <algorithm>
-#include <deque>
 #include <filesystem>
-#include <future>
+#include <map>
 #include <optional>
 #include <set>
 
 #include "io/camera_sidecar.h"
 #include "io/frame_reader.h"
 #include "io/sequence_pattern.h"
+#include "io/sequence_scan.h"
 #include "resolve/jitter.h"
 #include "resolve/option_registry.h"
+#include "resolve/frame_queues.h"
 #include "resolve/resolver.h"
+#include "resolve/window_plan.h"
+#include "resolve/window_resolver.h"
 #include "taa/error.h"
 
 namespace taa {
@@ -128,6 +131,19 @@ std::vector<std::string> outputChannelNames(const SequenceJob& job) {
   return names;
 }
 
+std::vector<int> availableInputFrames(const io::AovLayout& layout) {
+  std::vector<int> frames;
+  for (int frame : io::scanExistingFrames(layout.color.pattern)) {
+    bool complete = true;
+    for (const auto& [path, aov] : inputPaths(layout, frame)) {
+      std::error_code ec;
+      complete = complete && fs::is_regular_file(path, ec);
+    }
+    if (complete) frames.push_back(frame);
+  }
+  return frames;
+}
+
 void validateSequenceJob(const SequenceJob& job) {
   if (job.frames.empty()) throw Error("no frames to resolve", {job.layout.color.pattern});
   if (job.outputPattern.empty()) throw Error("no output given (use -o PATTERN)");
@@ -168,53 +184,28 @@ void validateSequenceJob(const SequenceJob& job) {
   }
 }
 
-void runSequenceJob(const SequenceJob& job, const JobCallbacks& callbacks) {
-  validateSequenceJob(job);
+namespace {
+
+// What both strategies share while running a job: inputs, outputs, the writer.
+struct JobRun {
+  const SequenceJob& job;
+  const JobCallbacks& callbacks;
   std::optional<io::CameraSidecar> sidecar;
-  if (!job.cameraSidecar.empty()) sidecar = io::CameraSidecar::load(job.cameraSidecar);
-  io::CameraInputs cameras{job.ndc, sidecar ? &*sidecar : nullptr};
-  io::WriteOptions write = job.write;
-  write.rgbaNames = outputChannelNames(job);
-  const std::string options = optionsAttribute(job);
-  auto context = gl::Context::create(job.backend, callbacks.log);
-  Resolver resolver(*context, job.resolve);
-  resolver.setDebugOutput(job.debugLayers);
+  io::CameraInputs cameras;
+  io::WriteOptions write;
+  std::string options;
 
-  // Frames are read ahead and written behind on worker threads while the GL thread resolves, so
-  // decoding and encoding overlap the resolve. The resolve itself runs in frame order on this
-  // thread, so the output cannot depend on timing. With ioThreads 0 the same code runs serially
-  // (deferred tasks run when their result is taken). Queues are bounded: memory stays constant.
-  const int count = static_cast<int>(job.frames.size());
-  const int inFlight = std::max(0, job.ioThreads);
-  const std::launch policy = inFlight > 0 ? std::launch::async : std::launch::deferred;
-  std::deque<std::future<io::FrameData>> reads;
-  int nextRead = 0;
-  std::deque<std::pair<std::future<void>, FrameReport>> writes;
-  auto finishOldestWrite = [&] {
-    writes.front().first.get();
-    if (callbacks.frameDone) callbacks.frameDone(writes.front().second);
-    writes.pop_front();
-  };
+  JobRun(const SequenceJob& j, const JobCallbacks& c) : job(j), callbacks(c) {
+    if (!job.cameraSidecar.empty()) sidecar = io::CameraSidecar::load(job.cameraSidecar);
+    cameras = {job.ndc, sidecar ? &*sidecar : nullptr};
+    write = job.write;
+    write.rgbaNames = outputChannelNames(job);
+    options = optionsAttribute(job);
+  }
 
-  for (int index = 0; index < count; ++index) {
-    for (; nextRead < count && nextRead <= index + inFlight; ++nextRead) {
-      const int frame = job.frames[nextRead];
-      reads.push_back(std::async(policy, [&job, frame, cameras] {
-        return io::readFrame(job.layout, frame, cameras);
-      }));
-    }
-    const int frame = job.frames[index];
-    FrameReport report;
-    report.index = index;
-    report.count = count;
-    report.frame = frame;
-    // Motion vectors point to frame - 1: any other predecessor makes history meaningless.
-    report.historyReset =
-        index == 0 || job.frames[index - 1] != frame - 1 || job.resetFrames.count(frame) > 0;
-    if (report.historyReset) resolver.resetHistory();
+  io::FrameData read(int frame) const { return io::readFrame(job.layout, frame, cameras); }
 
-    io::FrameData data = reads.front().get();
-    reads.pop_front();
+  ResolveInput inputOf(const io::FrameData& data) const {
     ResolveInput input;
     input.color = &data.color;
     input.depth = data.depth.empty() ? nullptr : &data.depth;
@@ -223,36 +214,181 @@ void runSequenceJob(const SequenceJob& job, const JobCallbacks& callbacks) {
     input.camera = data.camera ? &*data.camera : nullptr;
     input.window = data.window;
     input.ndc = data.ndc;
-    OIIO::ImageSpec spec = data.colorSpec;
-    // Read back in the type the file gets: a half output goes from GL to the encoder as is.
-    TypedImage output = [&] {
-      try {
-        return resolver.resolve(input, io::outputSampleType(write, spec));
-      } catch (const Error& e) {
-        throw Error(e.description(), {data.colorPath, frame, e.context().channel});
-      }
-    }();
+    return input;
+  }
 
-    report.cutDetected = resolver.lastFrameWasCut();
-    report.inputPath = data.colorPath;
-    report.outputPath = io::expandFramePattern(job.outputPattern, frame);
-    report.nonFiniteColorValues = data.nonFiniteColorValues;
+  // Errors of the resolve name the frame's colour file.
+  template <typename F>
+  TypedImage resolveNaming(const io::FrameData& data, F resolve) const {
+    try {
+      return resolve();
+    } catch (const Error& e) {
+      throw Error(e.description(), {data.colorPath, data.frame, e.context().channel});
+    }
+  }
+
+  // The output file of a frame: the input's header plus taa's attributes, pass-through
+  // channels, then the diagnostics.
+  std::function<void()> writeOf(const io::FrameData& data, TypedImage output,
+                                io::ExtraChannels debug) const {
+    OIIO::ImageSpec spec = data.colorSpec;
     spec.attribute("taa:version", TAA_VERSION_STRING);
     spec.attribute("taa:options", options);
     io::ExtraChannels extra = passthroughWithout(data.passthrough, write.rgbaNames);
-    if (job.debugLayers) {
-      io::appendExtraChannels(extra, debugChannels(resolver.lastDebug(), data.nonFiniteMask));
-    }
-    writes.emplace_back(
-        std::async(policy,
-                   [path = report.outputPath, output = std::move(output), spec = std::move(spec),
-                    &write, extra = std::move(extra)] {
-                     io::writeExrAtomic(path, output, spec, write, extra);
-                   }),
-        report);
-    while (int(writes.size()) > inFlight) finishOldestWrite();
+    if (!debug.names.empty()) io::appendExtraChannels(extra, debug);
+    return [path = io::expandFramePattern(job.outputPattern, data.frame),
+            output = std::move(output), spec = std::move(spec), this,
+            extra = std::move(extra)] { io::writeExrAtomic(path, output, spec, write, extra); };
   }
-  while (!writes.empty()) finishOldestWrite();
+
+  FrameReport reportOf(const io::FrameData& data, int index) const {
+    FrameReport report;
+    report.index = index;
+    report.count = int(job.frames.size());
+    report.frame = data.frame;
+    report.inputPath = data.colorPath;
+    report.outputPath = io::expandFramePattern(job.outputPattern, data.frame);
+    report.nonFiniteColorValues = data.nonFiniteColorValues;
+    return report;
+  }
+};
+
+// The recursive history resolve: frames in order, each blended into the last one's history.
+void runHistory(JobRun& run, gl::Context& context) {
+  const SequenceJob& job = run.job;
+  Resolver resolver(context, job.resolve);
+  resolver.setDebugOutput(job.debugLayers);
+  std::vector<FrameReport> reports(job.frames.size());
+  ReadAhead reads(job.frames, job.ioThreads, [&run](int frame) { return run.read(frame); });
+  WriteBehind writes(job.ioThreads, [&](int index) {
+    if (run.callbacks.frameDone) run.callbacks.frameDone(reports[std::size_t(index)]);
+  });
+  for (int index = 0; index < int(job.frames.size()); ++index) {
+    const int frame = job.frames[std::size_t(index)];
+    // Motion vectors point to frame - 1: any other predecessor makes history meaningless.
+    const bool historyReset = index == 0 || job.frames[std::size_t(index) - 1] != frame - 1 ||
+                              job.resetFrames.count(frame) > 0;
+    if (historyReset) resolver.resetHistory();
+    const io::FrameData data = reads.next();
+    const ResolveInput input = run.inputOf(data);
+    // Read back in the type the file gets: a half output goes from GL to the encoder as is.
+    TypedImage output = run.resolveNaming(data, [&] {
+      return resolver.resolve(input, io::outputSampleType(run.write, data.colorSpec));
+    });
+    FrameReport& report = reports[std::size_t(index)] = run.reportOf(data, index);
+    report.historyReset = historyReset;
+    report.cutDetected = resolver.lastFrameWasCut();
+    io::ExtraChannels debug;
+    if (job.debugLayers) debug = debugChannels(resolver.lastDebug(), data.nonFiniteMask);
+    writes.push(run.writeOf(data, std::move(output), std::move(debug)), index);
+  }
+  writes.finish();
+}
+
+// The window resolve's diagnostics and the input's NaN/Inf mask as extra output channels.
+io::ExtraChannels windowDebugChannels(const Image& debug, const Image& nonFiniteMask) {
+  io::ExtraChannels extra;
+  extra.names = {"debug.sampleWeight", "debug.rejectedFraction", "debug.candidates",
+                 "debug.nonFinite"};
+  extra.image = Image(debug.width, debug.height, 4);
+  for (std::size_t i = 0, n = std::size_t(debug.width) * debug.height; i < n; ++i) {
+    std::copy_n(&debug.pixels[kWindowDebugChannels * i], kWindowDebugChannels,
+                &extra.image.pixels[4 * i]);
+    extra.image.pixels[4 * i + 3] = nonFiniteMask.empty() ? 0.0f : nonFiniteMask.pixels[i];
+  }
+  return extra;
+}
+
+// The window resolve: frames enter a ring as they are read (once each, in order) and leave it
+// when no later window needs them; each output frame is resolved from its window alone.
+void runWindow(JobRun& run, gl::Context& context) {
+  const SequenceJob& job = run.job;
+  std::vector<int> outputs = job.frames;
+  std::sort(outputs.begin(), outputs.end());
+  const WindowPlan plan = planWindows(outputs, job.availableFrames, job.resetFrames,
+                                      job.resolve.window.radius);
+  WindowResolver resolver(context, job.resolve);
+  resolver.setDebugOutput(job.debugLayers);
+  std::vector<FrameReport> reports(outputs.size());
+  ReadAhead reads(plan.reads, job.ioThreads, [&run](int frame) { return run.read(frame); });
+  WriteBehind writes(job.ioThreads, [&](int index) {
+    if (run.callbacks.frameDone) run.callbacks.frameDone(reports[std::size_t(index)]);
+  });
+  std::map<int, io::FrameData> waiting;  // read output frames, pixels dropped once uploaded
+  std::optional<std::pair<int, std::optional<FrameCamera>>> lastCamera;
+  bool toldVectorsOnly = false;
+  std::vector<int> inRing;
+
+  for (int index = 0; index < int(outputs.size()); ++index) {
+    const int frame = outputs[std::size_t(index)];
+    const FrameWindow window = plan.windows.at(frame);
+    for (auto it = inRing.begin(); it != inRing.end();) {
+      if (*it < window.first) {
+        resolver.dropFrame(*it);
+        it = inRing.erase(it);
+      } else {
+        ++it;
+      }
+    }
+    while (!reads.done() && reads.peek() <= window.last) {
+      io::FrameData data = reads.next();
+      const int f = data.frame;
+      // The camera of the frame before, in the same shot, decides which samples are static.
+      std::optional<FrameCamera> previous;
+      if (!plan.shotStarts.count(f)) {
+        if (lastCamera && lastCamera->first == f - 1) {
+          previous = lastCamera->second;
+        } else {
+          previous = io::readFrameCamera(job.layout, f - 1, run.cameras, nullptr);
+        }
+      }
+      if (!data.camera && !toldVectorsOnly && run.callbacks.log) {
+        run.callbacks.log("window resolve: frame " + std::to_string(f) +
+                          " has no camera matrices (header or sidecar): its samples follow "
+                          "their motion vectors only");
+        toldVectorsOnly = true;
+      }
+      const ResolveInput input = run.inputOf(data);
+      try {
+        resolver.addFrame(f, input, previous ? &*previous : nullptr);
+      } catch (const Error& e) {
+        throw Error(e.description(), {data.colorPath, f, e.context().channel});
+      }
+      inRing.push_back(f);
+      lastCamera = std::make_pair(f, data.camera);
+      if (plan.windows.count(f)) {
+        data.color = TypedImage();  // uploaded: only the header and pass-through are kept
+        data.depth = Image();
+        data.motion = Image();
+        waiting.emplace(f, std::move(data));
+      }
+    }
+    io::FrameData data = std::move(waiting.at(frame));
+    waiting.erase(frame);
+    TypedImage output = run.resolveNaming(data, [&] {
+      return resolver.resolve(frame, window.first, window.last,
+                              io::outputSampleType(run.write, data.colorSpec));
+    });
+    FrameReport& report = reports[std::size_t(index)] = run.reportOf(data, index);
+    report.historyReset = plan.shotStarts.count(frame) > 0;
+    io::ExtraChannels debug;
+    if (job.debugLayers) debug = windowDebugChannels(resolver.lastDebug(), data.nonFiniteMask);
+    writes.push(run.writeOf(data, std::move(output), std::move(debug)), index);
+  }
+  writes.finish();
+}
+
+}  // namespace
+
+void runSequenceJob(const SequenceJob& job, const JobCallbacks& callbacks) {
+  validateSequenceJob(job);
+  JobRun run(job, callbacks);
+  auto context = gl::Context::create(job.backend, callbacks.log);
+  if (job.resolve.mode == ResolveMode::Window) {
+    runWindow(run, *context);
+  } else {
+    runHistory(run, *context);
+  }
 }
 
 }  // namespace taa

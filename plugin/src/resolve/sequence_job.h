@@ -1,5 +1,8 @@
-// Resolving a whole sequence: read each frame, resolve it in order, write it atomically. The
-// CLI, and later the farm and Python faces, describe a job and run it through here.
+// Resolving a whole sequence: the orchestration above io and the two resolve strategies. Frames
+// are read ahead and written behind (resolve/frame_queues) while the GL thread resolves: in
+// order through the history (resolve/resolver), or from a ring of each frame's window
+// (resolve/window_plan, resolve/window_resolver). Every output is written atomically. The CLI,
+// the farm and Python faces describe a job and run it through here.
 #pragma once
 
 #include <functional>
@@ -23,6 +26,10 @@ enum class JobJitterSource { Options, HeaderAttribute, Sidecar };
 struct SequenceJob {
   io::AovLayout layout;        // where color, depth and motion come from
   std::vector<int> frames;     // frames to resolve, in order
+  // Frames whose inputs exist (the color pattern's files on disk), for the window resolve:
+  // it reads those within K of a resolved frame, in its shot, even outside `frames`. Empty:
+  // `frames` alone.
+  std::vector<int> availableFrames;
   std::string outputPattern;   // frame-numbered output path
   io::WriteOptions write;
   ResolveOptions resolve;
@@ -58,6 +65,10 @@ struct JobCallbacks {
   gl::LogSink log;                                      // informational messages
   std::function<void(const FrameReport&)> frameDone;   // after each frame is written
 };
+
+// Frames of `layout` whose every input file (color, and depth and motion where they are files
+// of their own) exists, ascending.
+std::vector<int> availableInputFrames(const io::AovLayout& layout);
 
 // Checks the job before any work: frames present, every input file of every frame exists,
 // the output pattern can name each frame distinctly and never names an input file.

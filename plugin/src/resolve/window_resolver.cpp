@@ -1,0 +1,425 @@
+#include "resolve/window_resolver.h"
+
+#include <array>
+#include <map>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "color/ocio_bracket.h"
+#include "color/ocio_gpu_resources.h"
+#include "gl/objects.h"
+#include "resolve/reconstruction_filter.h"
+#include "taa/error.h"
+
+namespace taa {
+namespace {
+
+// Texture units. Every pass binds its own inputs from unit 0; the bracket's LUTs follow.
+enum TextureUnit : int {
+  kColourUnit = 0,  // gather: the ring's colour; prepare: the staged frame
+  kDepthUnit,       // gather: the ring's signed depth; classify: the staged depth
+  kMotionUnit,      // gather and classify: the ring's motion
+  kFirstOcioUnit
+};
+
+constexpr int kMaxSources = 32;  // window_gather.frag's MAX_SOURCES: K up to 16
+
+// How window_classify.frag decides which samples are static.
+enum class Classify : int { NoCamera = 0, PreviousCamera = 1, NextFrame = 2, AllStatic = 3 };
+
+void checkPlane(const ImageView& plane, const ImageView& color, int channels, const char* name) {
+  if (!plane) return;
+  if (plane.width != color.width || plane.height != color.height) {
+    throw Error(std::string(name) + " is " + std::to_string(plane.width) + "x" +
+                    std::to_string(plane.height) + " but color is " +
+                    std::to_string(color.width) + "x" + std::to_string(color.height),
+                {"", std::nullopt, name});
+  }
+  if (plane.channels != channels) {
+    throw Error(std::string(name) + " must have " + std::to_string(channels) +
+                    " channels, has " + std::to_string(plane.channels),
+                {"", std::nullopt, name});
+  }
+}
+
+GLenum glType(SampleType type) { return type == SampleType::Half ? GL_HALF_FLOAT : GL_FLOAT; }
+
+void validateOptions(const ResolveOptions& o) {
+  const WindowOptions& w = o.window;
+  if (w.radius < 0 || 2 * w.radius > kMaxSources) {
+    throw Error("window radius must be in [0, " + std::to_string(kMaxSources / 2) + "], got " +
+                std::to_string(w.radius));
+  }
+  if (!(w.sigma > 0.0f)) throw Error("window sigma must be > 0");
+  if (!(w.falloff >= 0.0f)) throw Error("window falloff must be >= 0");
+  if (!(w.colourTolerance >= 0.0f)) throw Error("window colour tolerance must be >= 0");
+  if (!(w.staticTolerance >= 0.0f)) throw Error("window static tolerance must be >= 0");
+  if (!(w.reconstructionWeight >= 0.0f)) throw Error("window reconstruction weight must be >= 0");
+  if (!(o.depthTolerance >= 0.0f)) throw Error("depth tolerance must be >= 0");
+}
+
+}  // namespace
+
+struct WindowResolver::Impl {
+  gl::Context& context;
+  const gl::Functions& gl;
+  ResolveOptions options;
+  gl::FullscreenTriangle triangle;
+
+  gl::Program prepareProgram, classifyProgram, gatherProgram;
+  color::OcioGpuResources toWorkingLuts, fromWorkingLuts;
+
+  // The ring: one layer per frame. Colour in the bracket's working space as half (the gather
+  // only averages it), depth signed by window_classify.frag (+ static, - moving), motion in
+  // half (1/1024 px at 1 px of motion, 1/64 at 64).
+  int width = 0, height = 0;
+  gl::TextureArray colour, depth, motion;
+  std::vector<gl::Framebuffer> colourLayerTargets, depthLayerTargets;
+  // Uploads pass through these: colour to be converted, depth to be classified. Two depth
+  // stages, because a shot's first frame is classified once its next frame has arrived.
+  gl::Texture colourStage;
+  SampleType colourStageType = SampleType::Float;
+  gl::Texture depthStage[2];
+  int nextDepthStage = 0;
+  gl::Texture output, debug;
+  gl::Framebuffer gatherTarget;
+  bool gatherHasDebug = false;
+
+  struct Slot {
+    int layer = 0;
+    glm::vec2 jitter{0.0f};
+    std::optional<FrameCamera> camera;
+    RasterWindow window;
+    NdcConvention ndc = NdcConvention::ZeroOneYDown;
+    bool hasDepth = false, hasMotion = false;
+  };
+  std::map<int, Slot> slots;
+  std::vector<int> freeLayers;
+  // A shot's first frame waiting for its next frame to be classified: frame and depth stage.
+  std::optional<std::pair<int, int>> pendingClassify;
+
+  bool debugOutput = false;
+  Image lastDebug;
+  std::vector<float> ones, zeros;  // stand-ins for a missing depth or motion AOV
+
+  Impl(gl::Context& ctx, const ResolveOptions& opts)
+      : context(ctx), gl(ctx.functions()), options(opts), triangle(gl) {
+    buildPrograms();
+  }
+
+  int capacity() const { return 2 * options.window.radius + 1; }
+
+  void buildPrograms() {
+    const color::OcioBracket bracket(options.color);
+    prepareProgram = gl::Program(
+        gl, gl::embeddedShaderSource("fullscreen.vert"),
+        gl::embeddedShaderSource("window_prepare.frag", {bracket.toWorking()->getShaderText()}));
+    classifyProgram = gl::Program(gl, "fullscreen.vert", "window_classify.frag");
+    gatherProgram = gl::Program(
+        gl, gl::embeddedShaderSource("fullscreen.vert"),
+        gl::embeddedShaderSource("window_gather.frag", {bracket.fromWorking()->getShaderText()}));
+    toWorkingLuts = color::OcioGpuResources(gl, bracket.toWorking(), kFirstOcioUnit);
+    fromWorkingLuts = color::OcioGpuResources(gl, bracket.fromWorking(), kFirstOcioUnit);
+    toWorkingLuts.setUniforms(prepareProgram);
+    fromWorkingLuts.setUniforms(gatherProgram);
+  }
+
+  void allocate(int w, int h) {
+    width = w;
+    height = h;
+    const int layers = capacity();
+    colour = gl::TextureArray(gl, w, h, layers, GL_RGBA16F);
+    depth = gl::TextureArray(gl, w, h, layers, GL_R32F);
+    motion = gl::TextureArray(gl, w, h, layers, GL_RG16F);
+    colourLayerTargets.clear();
+    depthLayerTargets.clear();
+    freeLayers.clear();
+    for (int layer = layers - 1; layer >= 0; --layer) freeLayers.push_back(layer);
+    for (int layer = 0; layer < layers; ++layer) {
+      colourLayerTargets.emplace_back(gl, std::vector<gl::Attachment>{{colour, layer}});
+      depthLayerTargets.emplace_back(gl, std::vector<gl::Attachment>{{depth, layer}});
+    }
+    colourStage = gl::Texture();
+    for (gl::Texture& stage : depthStage) stage = gl::Texture(gl, w, h, GL_R32F);
+    output = gl::Texture(gl, w, h, GL_RGBA32F);
+    debug = gl::Texture();
+    gatherTarget = gl::Framebuffer();
+    ones.assign(std::size_t(w) * h, 1.0f);
+    zeros.assign(std::size_t(w) * h * 2, 0.0f);
+    slots.clear();
+    pendingClassify.reset();
+  }
+
+  void prepareColour(const ImageView& color, int layer) {
+    if (!colourStage.id() || colourStageType != color.type) {
+      colourStageType = color.type;
+      colourStage = gl::Texture(gl, width, height,
+                                color.type == SampleType::Half ? GL_RGBA16F : GL_RGBA32F);
+    }
+    colourStage.upload(color.data, 4, glType(color.type));
+    colourLayerTargets[layer].bind();
+    prepareProgram.use();
+    prepareProgram.set("uColour", int(kColourUnit));
+    colourStage.bind(kColourUnit);
+    toWorkingLuts.bind();
+    triangle.draw();
+    gl::checkError(gl, "window prepare pass");
+  }
+
+  // Writes the signed depth of `frame` (raw depth in `stage`) into its layer.
+  void classify(int frame, int stage, Classify mode, const Slot* other) {
+    const Slot& slot = slots.at(frame);
+    const gl::Program& p = classifyProgram;
+    p.set("uClassifyMode", int(mode));
+    p.set("uDepth", int(kDepthUnit));
+    p.set("uMotion", int(kMotionUnit));
+    p.set("uLayer", slot.layer);
+    p.set("uNextLayer", other ? other->layer : slot.layer);
+    p.set("uJitter", slot.jitter.x, slot.jitter.y);
+    p.set("uTolerance", options.window.staticTolerance);
+    if (other) {
+      const ReprojectionMatrices m =
+          reprojectionMatrices(*slot.camera, *other->camera, slot.window, slot.ndc);
+      p.setMatrix4("uRasterToCamera", &m.rasterToCamera[0][0]);
+      p.setMatrix4("uCameraToOtherRaster", &m.cameraToPreviousRaster[0][0]);
+    }
+    depthLayerTargets[slot.layer].bind();
+    p.use();
+    depthStage[stage].bind(kDepthUnit);
+    motion.bind(kMotionUnit);
+    triangle.draw();
+    gl::checkError(gl, "window classify pass");
+  }
+
+  // The classification when nothing decides per sample: vectors only, or camera only.
+  Classify uniformClassification(const Slot& slot) const {
+    if (!slot.camera || !slot.hasDepth || options.cameraMotion == CameraMotion::Vectors) {
+      return Classify::NoCamera;
+    }
+    return Classify::AllStatic;
+  }
+
+  bool classifiesPerSample(const Slot& slot) const {
+    return slot.camera && slot.hasDepth && slot.hasMotion &&
+           options.cameraMotion != CameraMotion::Vectors &&
+           options.cameraMotion != CameraMotion::Camera;
+  }
+
+  // A waiting shot start gets its classification: forward against `next` if that is its next
+  // frame, else (the shot ended with it) every sample static.
+  void settlePending(const Slot* next, int nextFrame) {
+    if (!pendingClassify) return;
+    const auto [frame, stage] = *pendingClassify;
+    pendingClassify.reset();
+    const bool forward = next && nextFrame == frame + 1 && next->camera;
+    classify(frame, stage, forward ? Classify::NextFrame : Classify::AllStatic,
+             forward ? next : nullptr);
+  }
+
+  void addFrame(int frame, const ResolveInput& input, const FrameCamera* previousCamera) {
+    const ImageView& color = input.color;
+    if (!color || color.channels != 4) {
+      throw Error("resolve needs an RGBA color image", {"", std::nullopt, "color"});
+    }
+    checkPlane(input.depth, color, 1, "depth");
+    checkPlane(input.motion, color, 2, "motion");
+    if (slots.count(frame)) throw Error("window resolve: frame " + std::to_string(frame) + " added twice");
+    if (slots.empty() && (color.width != width || color.height != height)) {
+      allocate(color.width, color.height);
+    } else if (color.width != width || color.height != height) {
+      throw Error("frame is " + std::to_string(color.width) + "x" + std::to_string(color.height) +
+                      " but the frames of its window are " + std::to_string(width) + "x" +
+                      std::to_string(height) + " (a new size needs a new shot: --reset-frames)",
+                  {"", frame, "color"});
+    }
+    if (freeLayers.empty()) {
+      throw Error("window resolve: the ring of " + std::to_string(capacity()) +
+                  " frames is full", {"", frame});
+    }
+    Slot slot;
+    slot.layer = freeLayers.back();
+    slot.jitter = input.jitter;
+    if (input.camera) slot.camera = *input.camera;
+    slot.window = input.window;
+    slot.ndc = input.ndc;
+    slot.hasDepth = bool(input.depth);
+    slot.hasMotion = bool(input.motion);
+    freeLayers.pop_back();
+    const Slot& added = slots.emplace(frame, slot).first->second;
+
+    motion.upload(added.layer, input.motion ? input.motion.data : zeros.data(), 2,
+                  input.motion ? glType(input.motion.type) : GL_FLOAT);
+    settlePending(&added, frame);
+    prepareColour(color, added.layer);
+    const int stage = nextDepthStage;
+    nextDepthStage = 1 - nextDepthStage;
+    if (input.depth) {
+      depthStage[stage].upload(input.depth.data, 1, glType(input.depth.type));
+    } else {
+      depthStage[stage].upload(ones.data(), 1, GL_FLOAT);
+    }
+    if (!classifiesPerSample(added)) {
+      classify(frame, stage, uniformClassification(added), nullptr);
+    } else if (previousCamera) {
+      Slot previous;
+      previous.camera = *previousCamera;
+      previous.layer = added.layer;
+      classify(frame, stage, Classify::PreviousCamera, &previous);
+    } else {
+      pendingClassify = std::make_pair(frame, stage);
+    }
+  }
+
+  void dropFrame(int frame) {
+    const auto found = slots.find(frame);
+    if (found == slots.end()) return;
+    if (pendingClassify && pendingClassify->first == frame) settlePending(nullptr, 0);
+    freeLayers.push_back(found->second.layer);
+    slots.erase(found);
+  }
+
+  void setGatherUniforms(int frame, int first, int last) {
+    const Slot& target = slots.at(frame);
+    const gl::Program& p = gatherProgram;
+    p.set("uColour", int(kColourUnit));
+    p.set("uDepth", int(kDepthUnit));
+    p.set("uMotion", int(kMotionUnit));
+    p.set("uTargetLayer", target.layer);
+    p.set("uTargetJitter", target.jitter.x, target.jitter.y);
+    const std::array<float, 9> weights =
+        reconstructionWeights(options.reconstruction, target.jitter);
+    p.setArray("uReconstruction", weights.data(), int(weights.size()));
+    const bool useCameras = target.camera && options.cameraMotion != CameraMotion::Vectors;
+    p.set("uTargetHasCamera", useCameras ? 1 : 0);
+
+    std::vector<int> layers, offsets, hasCamera;
+    std::vector<float> jitters, rasterToCamera, cameraToTargetRaster, cameraToTargetDepth,
+        targetCameraToSourceRaster;
+    glm::mat4 targetRasterToCamera(1.0f);
+    auto appendMatrix = [](std::vector<float>& to, const glm::mat4& m) {
+      to.insert(to.end(), &m[0][0], &m[0][0] + 16);
+    };
+    // Nearest first, behind before ahead: the shader's chains walk outward in this order, and
+    // the sum's order is fixed by the window alone (never by what else the ring holds).
+    for (int distance = 1; distance <= options.window.radius; ++distance) {
+      for (int source : {frame - distance, frame + distance}) {
+        if (source < first || source > last) continue;
+        const auto found = slots.find(source);
+        if (found == slots.end()) {
+          throw Error("window resolve: frame " + std::to_string(source) + " of frame " +
+                      std::to_string(frame) + "'s window is not in the ring");
+        }
+        const Slot& s = found->second;
+        layers.push_back(s.layer);
+        offsets.push_back(source - frame);
+        jitters.push_back(s.jitter.x);
+        jitters.push_back(s.jitter.y);
+        const bool cameras = useCameras && s.camera;
+        hasCamera.push_back(cameras ? 1 : 0);
+        ReprojectionMatrices toTarget, fromTarget;
+        if (cameras) {
+          toTarget = reprojectionMatrices(*s.camera, *target.camera, s.window, s.ndc);
+          fromTarget = reprojectionMatrices(*target.camera, *s.camera, target.window, target.ndc);
+          targetRasterToCamera = fromTarget.rasterToCamera;
+        }
+        appendMatrix(rasterToCamera, toTarget.rasterToCamera);
+        appendMatrix(cameraToTargetRaster, toTarget.cameraToPreviousRaster);
+        const glm::mat4& toTargetCamera = toTarget.cameraToPreviousCamera;
+        for (int column = 0; column < 4; ++column) {
+          cameraToTargetDepth.push_back(toTargetCamera[column][2]);  // row z
+        }
+        appendMatrix(targetCameraToSourceRaster, fromTarget.cameraToPreviousRaster);
+      }
+    }
+    const int count = int(layers.size());
+    p.set("uSourceCount", count);
+    p.setMatrix4("uTargetRasterToCamera", &targetRasterToCamera[0][0]);
+    if (count == 0) return;
+    p.setIntArray("uSourceLayer", layers.data(), count);
+    p.setIntArray("uSourceOffset", offsets.data(), count);
+    p.setVec2Array("uSourceJitter", jitters.data(), count);
+    p.setIntArray("uSourceHasCamera", hasCamera.data(), count);
+    p.setMatrix4Array("uSourceRasterToCamera", rasterToCamera.data(), count);
+    p.setMatrix4Array("uSourceCameraToTargetRaster", cameraToTargetRaster.data(), count);
+    p.setMatrix4Array("uTargetCameraToSourceRaster", targetCameraToSourceRaster.data(), count);
+    p.setVec4Array("uSourceCameraToTargetDepth", cameraToTargetDepth.data(), count);
+  }
+
+  TypedImage resolve(int frame, int first, int last, SampleType outputType) {
+    if (!slots.count(frame) || frame < first || frame > last) {
+      throw Error("window resolve: frame " + std::to_string(frame) + " is not in the ring",
+                  {"", frame});
+    }
+    settlePending(nullptr, 0);
+    if (!gatherTarget.id() || gatherHasDebug != debugOutput) {
+      debug = debugOutput ? gl::Texture(gl, width, height, GL_RGBA32F) : gl::Texture();
+      gatherTarget = gl::Framebuffer(
+          gl, std::vector<gl::Attachment>{&output, debugOutput ? &debug : nullptr});
+      gatherHasDebug = debugOutput;
+    }
+    const gl::Program& p = gatherProgram;
+    p.set("uSigma", options.window.sigma);
+    p.set("uFalloff", options.window.falloff);
+    p.set("uColourTolerance", options.window.colourTolerance);
+    p.set("uDepthTolerance", options.depthTolerance);
+    p.set("uReconstructionWeight", options.window.reconstructionWeight);
+    setGatherUniforms(frame, first, last);
+    gatherTarget.bind();
+    p.use();
+    colour.bind(kColourUnit);
+    depth.bind(kDepthUnit);
+    motion.bind(kMotionUnit);
+    fromWorkingLuts.bind();
+    triangle.draw();
+    gl::checkError(gl, "window gather pass");
+
+    if (debugOutput) {
+      const std::vector<float> rgba = gatherTarget.readRGBA(1);
+      lastDebug = Image(width, height, kWindowDebugChannels);
+      for (std::size_t i = 0, n = std::size_t(width) * height; i < n; ++i) {
+        for (int c = 0; c < kWindowDebugChannels; ++c) {
+          lastDebug.pixels[i * kWindowDebugChannels + c] = rgba[i * 4 + c];
+        }
+      }
+    }
+    TypedImage result(width, height, 4, outputType);
+    gatherTarget.readRGBA(result.data(), glType(outputType), 0);
+    return result;
+  }
+};
+
+WindowResolver::WindowResolver(gl::Context& context, const ResolveOptions& options) {
+  validateOptions(options);
+  impl_ = std::make_unique<Impl>(context, options);
+}
+
+WindowResolver::~WindowResolver() = default;
+
+int WindowResolver::capacity() const { return impl_->capacity(); }
+
+void WindowResolver::addFrame(int frame, const ResolveInput& input,
+                              const FrameCamera* previousCamera) {
+  impl_->addFrame(frame, input, previousCamera);
+}
+
+void WindowResolver::dropFrame(int frame) { impl_->dropFrame(frame); }
+
+bool WindowResolver::hasFrame(int frame) const { return impl_->slots.count(frame) > 0; }
+
+void WindowResolver::clear() {
+  impl_->pendingClassify.reset();
+  for (auto& [frame, slot] : impl_->slots) impl_->freeLayers.push_back(slot.layer);
+  impl_->slots.clear();
+}
+
+TypedImage WindowResolver::resolve(int frame, int first, int last, SampleType outputType) {
+  return impl_->resolve(frame, first, last, outputType);
+}
+
+void WindowResolver::setDebugOutput(bool enabled) { impl_->debugOutput = enabled; }
+
+const Image& WindowResolver::lastDebug() const { return impl_->lastDebug; }
+
+}  // namespace taa

@@ -1,0 +1,61 @@
+// The window resolve (DESIGN.md section 4): frame t rebuilt from the raw jittered samples of
+// frames t-K..t+K, each carried to t along its own motion (glsl/window_gather.frag). Frames
+// enter a ring of 2K+1 on the GPU once, as they are read, and leave it when no window needs
+// them; every output frame depends on its window's frames and the options alone, so any
+// chunking of a shot resolves the same frames bit for bit.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "gl/context.h"
+#include "resolve/camera.h"
+#include "resolve/resolver.h"
+#include "taa/options.h"
+#include "util/image.h"
+
+namespace taa {
+
+// Per-pixel diagnostics of the last resolved frame (setDebugOutput): weight gathered (frame
+// t's own samples and its reconstruction included), fraction of candidate samples rejected
+// (hidden in t, or colour outside t's box), number of candidates.
+inline constexpr int kWindowDebugChannels = 3;
+
+class WindowResolver {
+ public:
+  // The context must be current on the calling thread for every call, destructor included.
+  WindowResolver(gl::Context& context, const ResolveOptions& options);
+  ~WindowResolver();
+  WindowResolver(const WindowResolver&) = delete;
+  WindowResolver& operator=(const WindowResolver&) = delete;
+
+  // The most frames the ring holds: 2K+1.
+  int capacity() const;
+
+  // Puts `frame` into the ring: colour (converted into the bracket's working space), depth and
+  // motion are uploaded once. `previousCamera` is the camera of frame - 1 when that frame
+  // belongs to the same shot (it decides which samples are static); nullptr at a shot's start,
+  // whose samples are checked against the next frame of the shot when it is added. All frames
+  // must have one size. Throws taa::Error on malformed input, a full ring or a GL failure.
+  void addFrame(int frame, const ResolveInput& input, const FrameCamera* previousCamera);
+  // Takes a frame out of the ring (a no-op for a frame it does not hold).
+  void dropFrame(int frame);
+  bool hasFrame(int frame) const;
+  // Drops every frame (a new sequence, or a new size).
+  void clear();
+
+  // Resolves `frame` from the ring's frames first..last (each added, consecutive, one shot,
+  // `frame` among them) and returns RGBA of the frames' size in `outputType`.
+  TypedImage resolve(int frame, int first, int last, SampleType outputType);
+
+  // Keep each frame's diagnostics for lastDebug() (one more read-back per frame).
+  void setDebugOutput(bool enabled);
+  // kWindowDebugChannels channels of the last resolved frame.
+  const Image& lastDebug() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace taa

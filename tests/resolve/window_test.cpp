@@ -1,0 +1,293 @@
+// The window resolve on tiny analytic scenes (real GL, llvmpipe here): each scene is point
+// sampled at every frame's Halton jitter through a pinhole camera, with exact depth, motion
+// vectors and camera matrices, so the output can be held against the box-filtered truth.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+#include <map>
+#include <optional>
+#include <cstring>
+
+#include "taa/error.h"
+
+#include "gl/context.h"
+#include "resolve/camera.h"
+#include "resolve/jitter.h"
+#include "resolve/window_resolver.h"
+
+namespace taa {
+namespace {
+
+constexpr int kWidth = 40, kHeight = 16;
+constexpr double kFocal = 40.0;  // pixels
+constexpr double kNear = 0.1, kFar = 1000.0;
+
+// What a ray hits: its colour and planar depth.
+struct Hit {
+  float colour = 0.0f;
+  double depth = 0.0;
+};
+
+// A scene of layers at constant depths seen by a camera at (cameraX(frame), 0, 0) looking down
+// +z; world y points down like raster y. `hit(frame, X, depth-ordered query)` answers what the
+// ray through raster (x, y) meets; `motionOf` is the surface's own motion in world X per frame
+// (0 for static layers).
+struct Scene {
+  std::function<double(int frame)> cameraX = [](int) { return 0.0; };
+  // The nearest hit along the ray through raster (x, y) at `frame`, and the world X per frame
+  // the hit surface moves by (its motion).
+  std::function<Hit(int frame, double x, double y, double& movesX)> trace;
+  bool withCameras = true;
+};
+
+double worldXAt(double rasterX, double depth, double cameraX) {
+  return cameraX + (rasterX - kWidth / 2.0) * depth / kFocal;
+}
+
+double rasterXOf(double worldX, double depth, double cameraX) {
+  return kWidth / 2.0 + kFocal * (worldX - cameraX) / depth;
+}
+
+FrameCamera cameraAt(double x) {
+  FrameCamera camera;
+  camera.worldToCamera = glm::dmat4(1.0);
+  camera.worldToCamera[3][0] = -x;
+  // NDC (0..1 over the display window, y down): x = 0.5 + f X / (W Z), y = 0.5 + f Y / (H Z).
+  glm::dmat4 projection(0.0);  // column-major
+  projection[0][0] = kFocal / kWidth;
+  projection[1][1] = kFocal / kHeight;
+  projection[2][0] = 0.5;
+  projection[2][1] = 0.5;
+  projection[2][2] = kFar / (kFar - kNear);
+  projection[3][2] = -kFar * kNear / (kFar - kNear);
+  projection[2][3] = 1.0;
+  camera.worldToNdc = projection * camera.worldToCamera;
+  return camera;
+}
+
+struct Frame {
+  Image color, depth, motion;
+  glm::vec2 jitter;
+  FrameCamera camera;
+};
+
+Frame render(const Scene& scene, int frame) {
+  Frame out{Image(kWidth, kHeight, 4), Image(kWidth, kHeight, 1), Image(kWidth, kHeight, 2),
+            frameJitter(frame, JitterOptions{}), cameraAt(scene.cameraX(frame))};
+  for (int y = 0; y < kHeight; ++y) {
+    for (int x = 0; x < kWidth; ++x) {
+      const double sx = x + 0.5 + out.jitter.x, sy = y + 0.5 + out.jitter.y;
+      double movesX = 0.0;
+      const Hit hit = scene.trace(frame, sx, sy, movesX);
+      float* c = out.color.at(x, y);
+      c[0] = c[1] = c[2] = hit.colour;
+      c[3] = 1.0f;
+      out.depth.at(x, y)[0] = float(hit.depth);
+      // Where the sample's point was one frame ago: it moved by movesX, the camera by the
+      // difference of its positions.
+      const double worldX = worldXAt(sx, hit.depth, scene.cameraX(frame));
+      const double previous = rasterXOf(worldX - movesX, hit.depth, scene.cameraX(frame - 1));
+      out.motion.at(x, y)[0] = float(previous - sx);
+      out.motion.at(x, y)[1] = 0.0f;
+    }
+  }
+  return out;
+}
+
+// The box-filtered truth of pixel (x, y) at `frame` (32x32 samples).
+float truth(const Scene& scene, int frame, int x, int y) {
+  double sum = 0.0;
+  for (int j = 0; j < 32; ++j) {
+    for (int i = 0; i < 32; ++i) {
+      double movesX = 0.0;
+      sum += scene.trace(frame, x + (i + 0.5) / 32.0, y + (j + 0.5) / 32.0, movesX).colour;
+    }
+  }
+  return float(sum / 1024.0);
+}
+
+ResolveOptions windowOptions(int radius) {
+  ResolveOptions o;
+  o.mode = ResolveMode::Window;
+  o.window.radius = radius;
+  o.color.bracket = "none";
+  return o;
+}
+
+class WindowTest : public ::testing::Test {
+ protected:
+  void SetUp() override { context_ = gl::Context::create(gl::Backend::Auto); }
+
+  // Resolves `frame` from frames frame-K..frame+K of the scene, on a resolver holding only them.
+  Image resolve(const Scene& scene, int frame, const ResolveOptions& options) {
+    WindowResolver resolver(*context_, options);
+    return resolveWith(resolver, scene, frame, options.window.radius);
+  }
+
+  Image resolveWith(WindowResolver& resolver, const Scene& scene, int frame, int radius,
+                    std::optional<int> shotStart = std::nullopt) {
+    const int first = frame - radius, last = frame + radius;
+    for (int f = first; f <= last; ++f) {
+      if (resolver.hasFrame(f)) continue;
+      const Frame data = render(scene, f);
+      ResolveInput input;
+      input.color = &data.color;
+      input.depth = &data.depth;
+      input.motion = &data.motion;
+      input.jitter = data.jitter;
+      input.camera = scene.withCameras ? &data.camera : nullptr;
+      input.window = {0, 0, kWidth, kHeight};
+      input.ndc = NdcConvention::ZeroOneYDown;
+      const FrameCamera previous = cameraAt(scene.cameraX(f - 1));
+      const bool startsShot = shotStart ? f == *shotStart : f == first;
+      resolver.addFrame(f, input, scene.withCameras && !startsShot ? &previous : nullptr);
+    }
+    return std::move(*resolver.resolve(frame, first, last, SampleType::Float).floats());
+  }
+
+  std::unique_ptr<gl::Context> context_;
+};
+
+// A vertical edge between 0 and 1 at x = 20.3, still: pixel 20 is 70% covered.
+Scene staticEdge() {
+  Scene scene;
+  scene.trace = [](int, double x, double, double&) { return Hit{x >= 20.3 ? 1.0f : 0.0f, 5.0}; };
+  return scene;
+}
+
+TEST_F(WindowTest, StaticJitteredEdgeConvergesToItsCoverage) {
+  const Scene scene = staticEdge();
+  const Image out = resolve(scene, 20, windowOptions(8));
+  for (int y = 2; y < kHeight - 2; ++y) {
+    EXPECT_NEAR(out.at(20, y)[0], truth(scene, 20, 20, y), 0.05f) << "y " << y;
+    EXPECT_NEAR(out.at(15, y)[0], 0.0f, 1e-6f);
+    EXPECT_NEAR(out.at(25, y)[0], 1.0f, 1e-6f);
+  }
+  // One frame alone cannot say: its sample at x + 0.5 + jitter is all or nothing.
+  const Image alone = resolve(scene, 20, windowOptions(0));
+  EXPECT_GT(std::fabs(alone.at(20, 8)[0] - truth(scene, 20, 20, 8)), 0.1f);
+}
+
+TEST_F(WindowTest, WithoutCamerasTheVectorsCarryTheSamples) {
+  // The edge moves 1.5 px a frame, said by the vectors alone: no camera matrices.
+  Scene scene;
+  scene.withCameras = false;
+  scene.trace = [](int frame, double x, double, double& movesX) {
+    movesX = 1.5 * 5.0 / kFocal;  // 1.5 px at depth 5
+    return Hit{x >= 10.3 + 1.5 * frame ? 1.0f : 0.0f, 5.0};
+  };
+  const int frame = 6;
+  const Image out = resolve(scene, frame, windowOptions(4));
+  const int x = 19;  // the edge is at 19.3 in frame 6
+  EXPECT_NEAR(out.at(x, 8)[0], truth(scene, frame, x, 8), 0.08f);
+  EXPECT_NEAR(out.at(x - 3, 8)[0], 0.0f, 1e-3f);
+  EXPECT_NEAR(out.at(x + 3, 8)[0], 1.0f, 1e-3f);
+}
+
+// A 0.3 px wire at depth 2 before a striped backdrop at depth 20; the camera slides, so the
+// backdrop moves past the wire. The frame's own samples miss the wire in most pixels; the
+// window must find it in the others' samples and keep the backdrop beside it.
+Scene wireBeforeBackdrop() {
+  Scene scene;
+  scene.cameraX = [](int frame) { return 0.05 * frame; };
+  scene.trace = [](int frame, double x, double, double&) {
+    const double camera = 0.05 * frame;
+    const double wireX = worldXAt(x, 2.0, camera);
+    if (wireX >= 0.0 && wireX < 0.3 * 2.0 / kFocal) return Hit{1.0f, 2.0};
+    const double backdropX = worldXAt(x, 20.0, camera);
+    return Hit{std::fmod(std::floor(backdropX * 4.0), 2.0) == 0.0 ? 0.3f : 0.1f, 20.0};
+  };
+  return scene;
+}
+
+TEST_F(WindowTest, ThinFeatureBeforeAMovingBackdropSurvives) {
+  const Scene scene = wireBeforeBackdrop();
+  const int frame = 10;
+  const Image out = resolve(scene, frame, windowOptions(8));
+  // The wire's column at frame 10: world x 0 at depth 2.
+  const int wire = int(std::floor(rasterXOf(0.0, 2.0, 0.05 * frame)));
+  for (int y = 3; y < kHeight - 3; ++y) {
+    const float expected = truth(scene, frame, wire, y);
+    EXPECT_NEAR(out.at(wire, y)[0], expected, 0.08f) << "y " << y;
+  }
+  // The backdrop two pixels away is untouched by the wire.
+  EXPECT_NEAR(out.at(wire + 3, 8)[0], truth(scene, frame, wire + 3, 8), 0.06f);
+}
+
+// A box (depth 1, colour 1) moving 2 px a frame right over a still backdrop (depth 10, 0.2),
+// static camera: what it leaves behind and what it is about to cover must show the backdrop.
+Scene movingBox() {
+  Scene scene;
+  scene.trace = [](int frame, double x, double y, double& movesX) {
+    const double left = 4.0 + 2.0 * frame;
+    if (x >= left && x < left + 8.0 && y >= 4.0 && y < 12.0) {
+      movesX = 2.0 * 1.0 / kFocal;  // 2 px at depth 1
+      return Hit{1.0f, 1.0};
+    }
+    return Hit{0.2f, 10.0};
+  };
+  return scene;
+}
+
+TEST_F(WindowTest, AnObjectRevealingTheBackgroundLeavesNoGhost) {
+  const Scene scene = movingBox();
+  const int frame = 8;  // the box covers x 20..28
+  const Image out = resolve(scene, frame, windowOptions(6));
+  for (int x : {14, 16, 18, 30, 32, 34}) {  // covered before or after, not now
+    EXPECT_NEAR(out.at(x, 8)[0], 0.2f, 0.02f) << "x " << x;
+  }
+  for (int x : {21, 24, 26}) EXPECT_NEAR(out.at(x, 8)[0], 1.0f, 0.02f) << "x " << x;
+}
+
+// A shadow edge sweeping right 2 px a frame over a still, lit plane: shading changes where
+// nothing moves. Pixels lit in this frame were in shadow in half the window.
+Scene sweepingShadow() {
+  Scene scene;
+  scene.trace = [](int frame, double x, double, double&) {
+    return Hit{x < 6.0 + 2.0 * frame ? 0.1f : 1.0f, 5.0};
+  };
+  return scene;
+}
+
+TEST_F(WindowTest, AMovingShadowIsNotSmeared) {
+  const Scene scene = sweepingShadow();
+  const int frame = 8;  // the edge at x = 22
+  ResolveOptions options = windowOptions(6);
+  const Image out = resolve(scene, frame, options);
+  for (int x : {24, 26, 28}) EXPECT_GT(out.at(x, 8)[0], 0.9f) << "x " << x;
+  for (int x : {15, 17, 19}) EXPECT_LT(out.at(x, 8)[0], 0.2f) << "x " << x;
+  // Without the colour test the shadow's past and future smear over the lit pixels.
+  options.window.colourTolerance = 0.0f;
+  const Image smeared = resolve(scene, frame, options);
+  EXPECT_LT(smeared.at(26, 8)[0], 0.8f);
+}
+
+// Each frame depends on its window alone: a resolver that has seen the whole shot and one
+// that holds just the window give the same bits.
+TEST_F(WindowTest, AFrameDependsOnItsWindowAlone) {
+  const Scene scene = wireBeforeBackdrop();
+  const ResolveOptions options = windowOptions(3);
+  WindowResolver running(*context_, options);
+  Image fromRunning;
+  for (int frame = 4; frame <= 12; ++frame) {
+    for (int f = frame - 8; f < frame - 3; ++f) running.dropFrame(f);
+    const Image out = resolveWith(running, scene, frame, 3, 1);
+    if (frame == 9) fromRunning = out;
+  }
+  WindowResolver fresh(*context_, options);
+  const Image alone = resolveWith(fresh, scene, 9, 3, 1);
+  ASSERT_EQ(alone.pixels.size(), fromRunning.pixels.size());
+  EXPECT_EQ(std::memcmp(alone.pixels.data(), fromRunning.pixels.data(),
+                        alone.pixels.size() * sizeof(float)),
+            0);
+}
+
+TEST_F(WindowTest, AFullRingIsAnError) {
+  const Scene scene = staticEdge();
+  WindowResolver resolver(*context_, windowOptions(1));
+  EXPECT_THROW(resolveWith(resolver, scene, 5, 2), Error);
+}
+
+}  // namespace
+}  // namespace taa
