@@ -1,150 +1,13 @@
 // The OpenFX bundle loaded the way a host loads it (test_host): descriptor properties, then
 // renders of a generated sequence compared against taatool's output on the same frames.
-#include <gtest/gtest.h>
-
-#include <OpenImageIO/imageio.h>
-
-#include <algorithm>
 #include <cmath>
-#include <cstdlib>
-#include <filesystem>
 #include <thread>
 
-#include <unistd.h>
-
-#include "scenegen/exr_output.h"
+#include "ofx_host_fixture.h"
 #include "taa/options.h"
-#include "scenegen/scene_library.h"
-#include "test_host.h"
 
 namespace taa::ofxtest {
 namespace {
-
-namespace fs = std::filesystem;
-
-constexpr int kFirst = 1, kLast = 8;
-const OfxRectI kBounds = {10, 20, 10 + 64, 20 + 40};  // offset bounds exercise the mapping
-
-// The bundle binary under OFX_PLUGIN_PATH's first folder, or the build tree's bundle folder.
-std::string bundleBinary() {
-  std::string root = TAA_OFX_BUNDLE_DIR;
-  if (const char* path = std::getenv("OFX_PLUGIN_PATH"); path && *path) {
-    root = std::string(path).substr(0, std::string(path).find(':'));
-  }
-  return root + "/TAAResolve.ofx.bundle/Contents/Linux-x86-64/TAAResolve.ofx";
-}
-
-Image readChannels(const std::string& path, const std::vector<std::string>& names) {
-  auto in = OIIO::ImageInput::open(path);
-  if (!in) throw std::runtime_error("cannot open " + path);
-  const OIIO::ImageSpec& spec = in->spec();
-  std::vector<float> all(std::size_t(spec.width) * spec.height * spec.nchannels);
-  in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, all.data());
-  Image image(spec.width, spec.height, int(names.size()));
-  for (int c = 0; c < int(names.size()); ++c) {
-    const int source = spec.channelindex(names[c]);
-    if (source < 0) throw std::runtime_error("no channel " + names[c] + " in " + path);
-    for (std::size_t p = 0; p < std::size_t(spec.width) * spec.height; ++p) {
-      image.pixels[p * names.size() + c] = all[p * spec.nchannels + source];
-    }
-  }
-  return image;
-}
-
-float maxDifference(const Image& a, const Image& b) {
-  if (a.pixels.size() != b.pixels.size()) return INFINITY;
-  float worst = 0.0f;
-  for (std::size_t i = 0; i < a.pixels.size(); ++i) {
-    worst = std::max(worst, std::fabs(a.pixels[i] - b.pixels[i]));
-  }
-  return worst;
-}
-
-int runTaatool(const std::string& args) {
-  return std::system((std::string("'") + TAA_TAATOOL_PATH + "' " + args + " -q").c_str());
-}
-
-class OfxHostTest : public ::testing::Test {
- protected:
-  static void SetUpTestSuite() {
-    // CTest runs each test of the suite as its own process, possibly in parallel.
-    dir_ = fs::path(TAA_TEST_TMPDIR) / ("sequence_" + std::to_string(getpid()));
-    fs::remove_all(dir_);
-    auto scene = scenes::makeScene("moving_object", 64, 40);
-    scenes::RenderSettings settings;
-    settings.truthSamplesPerAxis = 1;
-    for (int f = kFirst; f <= kLast; ++f) {
-      scenes::writeFrame(scene->render(f, settings), "moving_object",
-                         scenes::OutputLayout::Separate, dir_.string());
-    }
-    const std::string in = "'" + (dir_ / "beauty.####.exr").string() + "' --depth '" +
-                           (dir_ / "depth.####.exr").string() + "' --motion '" +
-                           (dir_ / "motion.####.exr").string() + "' -d float";
-    ASSERT_EQ(runTaatool(in + " -o '" + (dir_ / "taatool/out.####.exr").string() + "'"), 0);
-    ASSERT_EQ(runTaatool(in + " --frames 6-8 -o '" + (dir_ / "taatool68/out.####.exr").string() +
-                         "'"), 0);
-    ASSERT_EQ(runTaatool(in + " --jitter-scale 0.5 --motion-scale 0.5 -o '" +
-                         (dir_ / "taatool-half-scale/out.####.exr").string() + "'"), 0);
-    for (int f = kFirst; f <= kLast; ++f) {
-      const std::string n = std::to_string(10000 + f).substr(1);
-      color_.frames[f] = readChannels((dir_ / ("beauty." + n + ".exr")).string(),
-                                      {"R", "G", "B", "A"});
-      depth_.frames[f] = readChannels((dir_ / ("depth." + n + ".exr")).string(), {"Z"});
-      motion_.frames[f] = readChannels((dir_ / ("motion." + n + ".exr")).string(), {"X", "Y"});
-    }
-    for (auto* clip : {&color_, &depth_, &motion_}) {
-      ClipFrames half = *clip;
-      half.half = true;
-      halves_.push_back(half);
-    }
-  }
-
-  static void TearDownTestSuite() { fs::remove_all(dir_); }
-
-  static Image expected(int frame, const std::string& folder = "taatool") {
-    const std::string n = std::to_string(10000 + frame).substr(1);
-    return readChannels((dir_ / folder / ("out." + n + ".exr")).string(), {"R", "G", "B", "A"});
-  }
-
-  // Loads the bundle, describes it in the general context and creates an instance.
-  std::unique_ptr<HostEffect> instance(bool half = false, double lastFrame = kLast) {
-    EXPECT_EQ(host_.load(bundleBinary()), "");
-    EXPECT_EQ(host_.action(kOfxActionLoad, nullptr), kOfxStatOK);
-    EXPECT_EQ(host_.action(kOfxActionDescribe, &descriptor_), kOfxStatOK);
-    PropertySet context;
-    context.set(kOfxImageEffectPropContext, {std::string(kOfxImageEffectContextGeneral)});
-    contextDescriptor_.props = descriptor_.props;
-    EXPECT_EQ(host_.action(kOfxImageEffectActionDescribeInContext, &contextDescriptor_, &context),
-              kOfxStatOK);
-    const std::map<std::string, const ClipFrames*> inputs = {
-        {"Source", half ? &halves_[0] : &color_},
-        {"Depth", half ? &halves_[1] : &depth_},
-        {"Motion", half ? &halves_[2] : &motion_}};
-    auto effect = host_.makeInstance(contextDescriptor_, kOfxImageEffectContextGeneral, inputs,
-                                     kBounds, kFirst, lastFrame);
-    EXPECT_EQ(host_.action(kOfxActionCreateInstance, effect.get()), kOfxStatOK);
-    return effect;
-  }
-
-  void destroy(std::unique_ptr<HostEffect>& effect) {
-    EXPECT_EQ(host_.action(kOfxActionDestroyInstance, effect.get()), kOfxStatOK);
-    effect.reset();
-  }
-
-  Image render(HostEffect& effect, int frame, OfxStatus expectedStatus = kOfxStatOK,
-               double renderScale = 1.0) {
-    OutputImage output;
-    EXPECT_EQ(host_.render(effect, frame, output, renderScale), expectedStatus)
-        << "frame " << frame;
-    return output.toImage();
-  }
-
-  static inline fs::path dir_;
-  static inline ClipFrames color_, depth_, motion_;
-  static inline std::vector<ClipFrames> halves_;
-  TestHost host_;
-  HostEffect descriptor_, contextDescriptor_;
-};
 
 TEST_F(OfxHostTest, DescriptorDeclaresTemporalAccessDepthsAndContexts) {
   auto effect = instance();
@@ -174,9 +37,15 @@ TEST_F(OfxHostTest, DescriptorDeclaresTemporalAccessDepthsAndContexts) {
   EXPECT_DOUBLE_EQ(params.at("blend").props.getDouble(kOfxParamPropDefault),
                    double(ResolveOptions{}.blend));
   for (const char* name : {"rectify", "dilateMotion", "jitter", "jitterOffset", "jitterPeriod",
-                           "motionY", "motionTo", "motionScale", "historyFrames"}) {
+                           "motionY", "motionTo", "motionScale", "historyFrames",
+                           "ocioConfigSource", "ocioConfigFile", "colorspaceIn", "bracket",
+                           "colorspaceOut"}) {
     EXPECT_TRUE(params.count(name)) << name;
   }
+  EXPECT_EQ(params.at("bracket").props.getString(kOfxParamPropDefault),
+            ColorOptions{}.bracket);
+  EXPECT_EQ(params.at("ocioConfigFile").props.getString(kOfxParamPropStringMode),
+            kOfxParamStringIsFilePath);
 
   PropertySet filter, filterDescriptor;
   filter.set(kOfxImageEffectPropContext, {std::string(kOfxImageEffectContextFilter)});
@@ -194,7 +63,7 @@ TEST_F(OfxHostTest, FramesNeededReachBackToTheClipStart) {
   ASSERT_EQ(host_.action(kOfxImageEffectActionGetFramesNeeded, effect.get(), &in, &out),
             kOfxStatOK);
   for (const char* clip : {"Source", "Depth", "Motion"}) {
-    const std::string name = std::string("OfxImageClipPropFrameRange_") + clip;
+    const std::string name = std::string(kOfxImageClipPropFrameRangePrefix) + clip;
     ASSERT_EQ(out.dimension(name), 2) << name;
     EXPECT_EQ(out.getDouble(name, 0), 1.0);
     EXPECT_EQ(out.getDouble(name, 1), 5.0);
@@ -203,7 +72,7 @@ TEST_F(OfxHostTest, FramesNeededReachBackToTheClipStart) {
   in.set(kOfxPropTime, {8.0});
   ASSERT_EQ(host_.action(kOfxImageEffectActionGetFramesNeeded, effect.get(), &in, &out),
             kOfxStatOK);
-  EXPECT_EQ(out.getDouble("OfxImageClipPropFrameRange_Source", 0), 6.0);
+  EXPECT_EQ(out.getDouble(std::string(kOfxImageClipPropFrameRangePrefix) + "Source", 0), 6.0);
   destroy(effect);
 }
 
@@ -281,14 +150,18 @@ TEST_F(OfxHostTest, HalfImagesStayCloseToTheFloatResult) {
   destroy(effect);
 }
 
-TEST_F(OfxHostTest, MissingInputFailsWithAMessage) {
+// A failed render leaves a persistent message on the effect (hosts show it on the node) that
+// names the clip and the frame; the next good render clears it.
+TEST_F(OfxHostTest, MissingInputFailsWithAPersistentMessage) {
   auto effect = instance(false, 10.0);  // the clip claims frames up to 10; images end at 8
   render(*effect, 9, kOfxStatFailed);
-  const auto messages = host_.messages();
-  ASSERT_FALSE(messages.empty());
-  EXPECT_NE(messages.back().find("no image for the Source clip at frame 9"), std::string::npos)
-      << messages.back();
+  const std::string message = host_.persistentMessage(*effect);
+  EXPECT_NE(message.find("OfxMessageError: "), std::string::npos) << message;
+  EXPECT_NE(message.find("no image for the Source clip at frame 9"), std::string::npos)
+      << message;
   EXPECT_EQ(host_.liveImages(), 0);
+  render(*effect, 3);
+  EXPECT_EQ(host_.persistentMessage(*effect), "");
   destroy(effect);
 }
 

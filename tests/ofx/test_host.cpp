@@ -13,6 +13,7 @@ namespace {
 // The suites are plain C functions: they reach the host through this state.
 std::mutex stateMutex;
 std::vector<std::string> postedMessages;
+std::map<const void*, std::string> persistentMessages;  // by effect handle
 thread_local OutputImage* currentOutput = nullptr;
 
 struct HostImage {
@@ -21,21 +22,29 @@ struct HostImage {
 };
 std::map<PropertySet*, std::unique_ptr<HostImage>> liveImages;  // by their props
 
-const char* componentsName(int components) {
-  return components == 1 ? kOfxImageComponentAlpha
-         : components == 4 ? kOfxImageComponentRGBA
-                           : kOfxImageComponentRGB;
+int componentCount(const std::string& components) {
+  return components == kOfxImageComponentAlpha ? 1
+         : components == kOfxImageComponentRGB ? 3
+                                                : 4;
+}
+
+// What a stored frame of `channels` channels is connected as: 1 Alpha, 2 or 3 RGB, 4 RGBA.
+const char* nativeComponents(int channels) {
+  return channels == 1 ? kOfxImageComponentAlpha
+         : channels == 4 ? kOfxImageComponentRGBA
+                         : kOfxImageComponentRGB;
 }
 
 void describeImage(PropertySet& props, void* data, const OfxRectI& bounds, int rowBytes,
-                   bool half, int components) {
+                   bool half, const std::string& components, double pixelAspectRatio) {
   props.set(kOfxImagePropData, {data});
   props.set(kOfxImagePropBounds, {bounds.x1, bounds.y1, bounds.x2, bounds.y2});
   props.set(kOfxImagePropRowBytes, {rowBytes});
   props.set(kOfxImageEffectPropPixelDepth,
             {std::string(half ? kOfxBitDepthHalf : kOfxBitDepthFloat)});
-  props.set(kOfxImageEffectPropComponents, {std::string(componentsName(components))});
+  props.set(kOfxImageEffectPropComponents, {components});
   props.set(kOfxImageEffectPropPreMultiplication, {std::string(kOfxImagePreMultiplied)});
+  props.set(kOfxImagePropPixelAspectRatio, {pixelAspectRatio});
 }
 
 void storeValue(char* at, bool half, float value) {
@@ -60,23 +69,47 @@ float loadValue(const char* at, bool half) {
   return value;
 }
 
-// An input frame as an OFX image: y-up rows, 16 bytes of padding per row, the clip's bounds.
+// A stored pixel as RGBA, the way a host widens components: Alpha -> (0, 0, 0, a), two
+// channels -> (x, y, 0, 1), RGB -> (r, g, b, 1).
+void widen(const float* in, int channels, float rgba[4]) {
+  rgba[0] = rgba[1] = rgba[2] = 0.0f;
+  rgba[3] = 1.0f;
+  if (channels == 1) {
+    rgba[3] = in[0];
+    return;
+  }
+  for (int c = 0; c < channels; ++c) rgba[c] = in[c];
+}
+
+// An input frame as an OFX image: y-up rows, 16 bytes of padding per row, the clip's bounds
+// (a frame smaller than them is centred in them with zeros around, one larger is cropped),
+// served as the clip's mapped components.
 HostImage* makeInputImage(const HostClip& clip, const Image& frame) {
   const bool half = clip.source->half;
-  const int components = frame.channels == 2 ? 3 : frame.channels;  // 2 -> RGB with B = 0
+  const std::string components =
+      clip.components.empty() ? nativeComponents(frame.channels) : clip.components;
+  const int count = componentCount(components);
   const int bytes = half ? 2 : 4;
-  const int rowBytes = frame.width * components * bytes + 16;
+  const int width = clip.bounds.x2 - clip.bounds.x1, height = clip.bounds.y2 - clip.bounds.y1;
+  const int rowBytes = width * count * bytes + 16;
+  const int dx = (width - frame.width) / 2, dy = (height - frame.height) / 2;
   auto* image = new HostImage;
-  image->data.assign(std::size_t(rowBytes) * frame.height, 0);
-  for (int row = 0; row < frame.height; ++row) {
-    char* out = image->data.data() + std::size_t(frame.height - 1 - row) * rowBytes;
-    for (int x = 0; x < frame.width; ++x) {
-      for (int c = 0; c < frame.channels; ++c) {
-        storeValue(out + (x * components + c) * bytes, half, frame.at(x, row)[c]);
-      }
+  image->data.assign(std::size_t(rowBytes) * height, 0);
+  for (int row = 0; row < height; ++row) {
+    const int frameRow = row - dy;
+    if (frameRow < 0 || frameRow >= frame.height) continue;
+    char* out = image->data.data() + std::size_t(height - 1 - row) * rowBytes;
+    for (int x = 0; x < width; ++x) {
+      const int frameX = x - dx;
+      if (frameX < 0 || frameX >= frame.width) continue;
+      float rgba[4];
+      widen(frame.at(frameX, frameRow), frame.channels, rgba);
+      const float* served = count == 1 ? &rgba[3] : rgba;
+      for (int c = 0; c < count; ++c) storeValue(out + (x * count + c) * bytes, half, served[c]);
     }
   }
-  describeImage(image->props, image->data.data(), clip.bounds, rowBytes, half, components);
+  describeImage(image->props, image->data.data(), clip.bounds, rowBytes, half, components,
+                clip.pixelAspectRatio);
   return image;
 }
 
@@ -124,7 +157,8 @@ OfxStatus clipGetImage(OfxImageClipHandle handle, OfxTime time, const OfxRectD*,
     if (!currentOutput) return kOfxStatFailed;
     image = new HostImage;
     describeImage(image->props, currentOutput->data.data(), currentOutput->bounds,
-                  currentOutput->rowBytes, currentOutput->half, 4);
+                  currentOutput->rowBytes, currentOutput->half, kOfxImageComponentRGBA,
+                  clip.pixelAspectRatio);
   } else {
     if (!clip.source) return kOfxStatFailed;
     const auto frame = clip.source->frames.find(int(time));
@@ -132,6 +166,7 @@ OfxStatus clipGetImage(OfxImageClipHandle handle, OfxTime time, const OfxRectD*,
     image = makeInputImage(clip, frame->second);
   }
   std::lock_guard<std::mutex> lock(stateMutex);
+  ++const_cast<HostClip&>(clip).imagesServed;
   liveImages[&image->props].reset(image);
   *imageProps = image->props.handle();
   return kOfxStatOK;
@@ -197,6 +232,8 @@ OfxStatus paramGetPropertySet(OfxParamHandle param, OfxPropertySetHandle* props)
 OfxStatus readParam(const HostParam& param, va_list args) {
   if (param.type == kOfxParamTypeDouble) {
     *va_arg(args, double*) = param.doubleValue;
+  } else if (param.type == kOfxParamTypeString) {
+    *va_arg(args, const char**) = param.stringValue.c_str();
   } else {
     *va_arg(args, int*) = param.intValue;
   }
@@ -248,27 +285,52 @@ const OfxParameterSuiteV1 kParameterSuite = {
     paramKeyIndex,        paramDeleteKey,        paramDeleteAllKeys,     paramCopy,
     paramEditBegin,       paramEditEnd};
 
-// --- OfxMessageSuiteV1
+// --- OfxMessageSuiteV2 (its first member is version 1's)
+std::string formatMessage(const char* type, const char* format, va_list args) {
+  char text[4096];
+  std::vsnprintf(text, sizeof text, format, args);
+  return std::string(type ? type : "") + ": " + text;
+}
+
 OfxStatus postMessage(void*, const char* type, const char*, const char* format, ...) {
-  char text[2048];
   va_list args;
   va_start(args, format);
-  std::vsnprintf(text, sizeof text, format, args);
+  const std::string text = formatMessage(type, format, args);
   va_end(args);
   std::lock_guard<std::mutex> lock(stateMutex);
-  postedMessages.push_back(std::string(type ? type : "") + ": " + text);
+  postedMessages.push_back(text);
   return kOfxStatOK;
 }
 
-const OfxMessageSuiteV1 kMessageSuite = {postMessage};
+OfxStatus setPersistentMessage(void* effect, const char* type, const char*, const char* format,
+                               ...) {
+  if (!effect) return kOfxStatErrBadHandle;
+  va_list args;
+  va_start(args, format);
+  const std::string text = formatMessage(type, format, args);
+  va_end(args);
+  std::lock_guard<std::mutex> lock(stateMutex);
+  persistentMessages[effect] = text;
+  return kOfxStatOK;
+}
+
+OfxStatus clearPersistentMessage(void* effect) {
+  if (!effect) return kOfxStatErrBadHandle;
+  std::lock_guard<std::mutex> lock(stateMutex);
+  persistentMessages.erase(effect);
+  return kOfxStatOK;
+}
+
+const OfxMessageSuiteV2 kMessageSuite = {postMessage, setPersistentMessage,
+                                         clearPersistentMessage};
 
 const void* fetchSuite(OfxPropertySetHandle, const char* name, int version) {
   const std::string n = name ? name : "";
+  if (n == kOfxMessageSuite && (version == 1 || version == 2)) return &kMessageSuite;
   if (version != 1) return nullptr;
   if (n == kOfxPropertySuite) return propertySuite();
   if (n == kOfxImageEffectSuite) return &kImageEffectSuite;
   if (n == kOfxParameterSuite) return &kParameterSuite;
-  if (n == kOfxMessageSuite) return &kMessageSuite;
   return nullptr;
 }
 
@@ -294,6 +356,7 @@ TestHost::TestHost() {
   host_.fetchSuite = fetchSuite;
   std::lock_guard<std::mutex> lock(stateMutex);
   postedMessages.clear();
+  persistentMessages.clear();
 }
 
 TestHost::~TestHost() {
@@ -304,12 +367,12 @@ TestHost::~TestHost() {
 std::string TestHost::load(const std::string& binaryPath) {
   library_ = dlopen(binaryPath.c_str(), RTLD_NOW | RTLD_LOCAL);
   if (!library_) return dlerror();
-  auto count = reinterpret_cast<int (*)()>(dlsym(library_, "OfxGetNumberOfPlugins"));
-  auto get = reinterpret_cast<OfxPlugin* (*)(int)>(dlsym(library_, "OfxGetPlugin"));
-  if (!count || !get) return "OfxGetNumberOfPlugins/OfxGetPlugin not exported";
+  auto count = reinterpret_cast<int (*)()>(dlsym(library_, kOfxGetNumberOfPluginsSymbol));
+  auto get = reinterpret_cast<OfxPlugin* (*)(int)>(dlsym(library_, kOfxGetPluginSymbol));
+  if (!count || !get) return "the bundle's entry points are not exported";
   if (count() < 1) return "the bundle has no plugin";
   plugin_ = get(0);
-  if (!plugin_) return "OfxGetPlugin(0) returned NULL";
+  if (!plugin_) return "the bundle's first plugin is NULL";
   plugin_->setHost(&host_);
   return "";
 }
@@ -340,6 +403,12 @@ std::unique_ptr<HostEffect> TestHost::makeInstance(
     if (name == kOfxImageEffectSimpleSourceClipName && clip.source) sourceHalf = clip.source->half;
     const bool connected = clip.source || name == kOfxImageEffectOutputClipName;
     clip.props.set(kOfxImageClipPropConnected, {connected ? 1 : 0});
+    std::string unmapped = connected ? kOfxImageComponentRGBA : kOfxImageComponentNone;
+    if (clip.source && !clip.source->frames.empty()) {
+      unmapped = nativeComponents(clip.source->frames.begin()->second.channels);
+    }
+    clip.props.set(kOfxImageClipPropUnmappedComponents, {unmapped});
+    clip.props.set(kOfxImagePropPixelAspectRatio, {1.0});
     clip.props.set(kOfxImageEffectPropFrameRange, {firstFrame, lastFrame});
     clip.props.set(kOfxPropName, {name});
   }
@@ -354,6 +423,8 @@ std::unique_ptr<HostEffect> TestHost::makeInstance(
     if (!param.props.has(kOfxParamPropDefault)) continue;
     if (param.type == kOfxParamTypeDouble) {
       param.doubleValue = param.props.getDouble(kOfxParamPropDefault);
+    } else if (param.type == kOfxParamTypeString) {
+      param.stringValue = param.props.getString(kOfxParamPropDefault);
     } else {
       param.intValue = param.props.getInt(kOfxParamPropDefault);
     }
@@ -361,8 +432,44 @@ std::unique_ptr<HostEffect> TestHost::makeInstance(
   return instance;
 }
 
+OfxStatus TestHost::clipPreferences(HostEffect& instance, PropertySet& outArgs, bool honour) {
+  // The default for every input: the most chromatic components among the connected inputs.
+  std::string defaults = kOfxImageComponentAlpha;
+  for (const auto& [name, clip] : instance.clips) {
+    if (!clip.source || clip.source->frames.empty()) continue;
+    const std::string native = nativeComponents(clip.source->frames.begin()->second.channels);
+    if (componentCount(native) > componentCount(defaults)) defaults = native;
+  }
+  outArgs = PropertySet{};
+  for (const auto& [name, clip] : instance.clips) {
+    const bool output = name == kOfxImageEffectOutputClipName;
+    outArgs.set(kOfxImageClipPropComponentsPrefix + name,
+                {output ? std::string(kOfxImageComponentRGBA) : defaults});
+    outArgs.set(kOfxImageClipPropPARPrefix + name, {clip.pixelAspectRatio});
+  }
+  const OfxStatus status =
+      action(kOfxImageEffectActionGetClipPreferences, &instance, nullptr, &outArgs);
+  if (status != kOfxStatOK && status != kOfxStatReplyDefault) return status;
+  for (auto& [name, clip] : instance.clips) {
+    if (!clip.source) continue;
+    clip.components = honour ? outArgs.getString(kOfxImageClipPropComponentsPrefix + name)
+                             : defaults;
+    clip.props.set(kOfxImageEffectPropComponents, {clip.components});
+  }
+  return status;
+}
+
+OfxStatus TestHost::parameterChanged(HostEffect& instance, const std::string& name) {
+  PropertySet inArgs;
+  inArgs.set(kOfxPropType, {std::string(kOfxTypeParameter)});
+  inArgs.set(kOfxPropName, {name});
+  inArgs.set(kOfxPropTime, {0.0});
+  return action(kOfxActionInstanceChanged, &instance, &inArgs);
+}
+
 OfxStatus TestHost::render(HostEffect& instance, double time, OutputImage& output,
-                           double renderScale) {
+                           double renderScaleX, double renderScaleY) {
+  if (renderScaleY < 0.0) renderScaleY = renderScaleX;
   const HostClip& out = instance.clips.at(kOfxImageEffectOutputClipName);
   output.bounds = out.bounds;
   output.half = out.props.getString(kOfxImageEffectPropPixelDepth) == kOfxBitDepthHalf;
@@ -372,10 +479,10 @@ OfxStatus TestHost::render(HostEffect& instance, double time, OutputImage& outpu
 
   PropertySet inArgs;
   inArgs.set(kOfxPropTime, {time});
-  inArgs.set("OfxImageEffectPropFieldToRender", {std::string("OfxImageFieldNone")});
+  inArgs.set(kOfxImageEffectPropFieldToRender, {std::string(kOfxImageFieldNone)});
   inArgs.set(kOfxImageEffectPropRenderWindow,
              {out.bounds.x1, out.bounds.y1, out.bounds.x2, out.bounds.y2});
-  inArgs.set(kOfxImageEffectPropRenderScale, {renderScale, renderScale});
+  inArgs.set(kOfxImageEffectPropRenderScale, {renderScaleX, renderScaleY});
   currentOutput = &output;
   const OfxStatus status = action(kOfxImageEffectActionRender, &instance, &inArgs);
   currentOutput = nullptr;
@@ -385,6 +492,12 @@ OfxStatus TestHost::render(HostEffect& instance, double time, OutputImage& outpu
 std::vector<std::string> TestHost::messages() const {
   std::lock_guard<std::mutex> lock(stateMutex);
   return postedMessages;
+}
+
+std::string TestHost::persistentMessage(const HostEffect& effect) const {
+  std::lock_guard<std::mutex> lock(stateMutex);
+  const auto it = persistentMessages.find(&effect);
+  return it == persistentMessages.end() ? "" : it->second;
 }
 
 int TestHost::liveImages() const {

@@ -1,6 +1,10 @@
 // A minimal OpenFX image-effect host for tests: loads a bundle binary with dlopen, offers the
-// property, image-effect, parameter and message suites, and serves clip images from frames
-// held in memory (converted to OFX's y-up layout with padded rows and offset bounds).
+// property, image-effect, parameter and message (version 2: persistent messages) suites, and
+// serves clip images from frames held in memory, converted to OFX's y-up layout with padded
+// rows and offset bounds. Like a host on the official SDK's host-support library it maps each
+// input clip's components as the clip preferences action asks (default: the most chromatic
+// connected input, so an Alpha clip becomes RGBA with its value in A), and can give clips
+// their own bounds (overscan) and pixel aspect ratio.
 #pragma once
 
 #include <functional>
@@ -21,6 +25,7 @@ struct HostParam {
   PropertySet props;
   double doubleValue = 0.0;
   int intValue = 0;  // integer, boolean and choice parameters
+  std::string stringValue;
 };
 
 // Frames of one clip: frame number -> image (rows top first, 1, 3 or 4 channels).
@@ -34,6 +39,9 @@ struct HostClip {
   PropertySet props;
   const ClipFrames* source = nullptr;  // null: nothing connected (or the output clip)
   OfxRectI bounds{};                   // where every image of the clip lies
+  std::string components;              // images are served as this; "" = as stored
+  double pixelAspectRatio = 1.0;
+  int imagesServed = 0;                // clipGetImage calls answered with an image
 };
 
 struct HostEffect {
@@ -73,11 +81,22 @@ class TestHost {
                                            const std::map<std::string, const ClipFrames*>& inputs,
                                            OfxRectI bounds, double firstFrame, double lastFrame);
 
+  // Runs the clip preferences action with the host's defaults filled in first (each input:
+  // the most chromatic components of the connected inputs), then maps every input clip to
+  // what the plugin left in the arguments, or, with `honour` false, to the defaults whatever
+  // the plugin asks (a host that cannot remap). `outArgs` receives the action's arguments.
+  OfxStatus clipPreferences(HostEffect& instance, PropertySet& outArgs, bool honour = true);
+
+  // Tells the instance that parameter `name` changed (kOfxActionInstanceChanged).
+  OfxStatus parameterChanged(HostEffect& instance, const std::string& name);
+
   // Renders the whole frame at `time` into a new output image (bounds of the instance).
   OfxStatus render(HostEffect& instance, double time, OutputImage& output,
-                   double renderScale = 1.0);
+                   double renderScaleX = 1.0, double renderScaleY = -1.0 /* = x */);
 
   std::vector<std::string> messages() const;
+  // The persistent message on `effect` ("type: text"), "" when none.
+  std::string persistentMessage(const HostEffect& effect) const;
   int liveImages() const;
 
   OfxHost* ofxHost() { return &host_; }

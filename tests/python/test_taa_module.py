@@ -127,3 +127,36 @@ def test_node_errors_carry_the_library_message():
         node.push(np.zeros((8, 8, 2), np.float32))
     # The node still works after errors.
     assert node.push(color + 0.25)[0, 0, 0] == pytest.approx(0.25)
+
+
+STUDIO_CONFIG = """ocio_profile_version: 2
+roles:
+  default: lin
+  scene_linear: lin
+file_rules:
+  - !<Rule> {name: Default, colorspace: default}
+displays:
+  d:
+    - !<View> {name: v, colorspace: lin}
+colorspaces:
+  - !<ColorSpace> {name: lin}
+"""
+
+
+def test_ocio_variable_is_read_only_when_asked(tmp_root, monkeypatch):
+    """Hosts set $OCIO to a studio config without taa's brackets: the defaults ignore it."""
+    studio = os.path.join(tmp_root, "studio.ocio")
+    with open(studio, "w") as config:
+        config.write(STUDIO_CONFIG)
+    monkeypatch.setenv("OCIO", studio)
+    color, depth, motion = load_frame(1)
+    reference = taa.Node().push(color, depth=depth, motion=motion, frame=1)
+    monkeypatch.delenv("OCIO")
+    np.testing.assert_array_equal(
+        reference, taa.Node().push(color, depth=depth, motion=motion, frame=1))
+
+    monkeypatch.setenv("OCIO", studio)
+    taa.resolve_sequence(os.path.join(SAMPLE_DIR, "beauty.####.exr"), frames="1",
+                         output=os.path.join(tmp_root, "studio_ocio.####.exr"))
+    with pytest.raises(taa.Error, match=r'"taa_reinhard" in the OCIO config \$OCIO \('):
+        taa.Node(ocio_config="$OCIO").push(color, frame=1)

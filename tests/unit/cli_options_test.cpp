@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -86,6 +87,25 @@ TEST(CliOptions, BracketOptions) {
   EXPECT_EQ(cl.job.resolve.color.bracket, "taa_log2");
   EXPECT_EQ(cl.job.resolve.color.colorspaceOut, "lin");
   EXPECT_TRUE(parseCommandLine({"--list-brackets"}).listBrackets);
+}
+
+// taatool reads $OCIO when --ocio-config is not given; the parser alone (Python's
+// resolve_sequence) never does.
+TEST(CliOptions, OcioVariableIsTaatoolsDefaultOnly) {
+  const std::vector<std::string> plain = {"b.#.exr", "-o", "o.#.exr"};
+  const std::vector<std::string> given = {"b.#.exr", "-o", "o.#.exr", "--ocio-config", ""};
+  setenv("OCIO", "/studio/config.ocio", 1);
+  CommandLine cl = parseCommandLine(plain);
+  EXPECT_EQ(cl.job.resolve.color.ocioConfig, "");
+  useOcioEnvironmentUnlessGiven(cl, plain);
+  EXPECT_EQ(cl.job.resolve.color.ocioConfig, "$OCIO");
+  cl = parseCommandLine(given);
+  useOcioEnvironmentUnlessGiven(cl, given);
+  EXPECT_EQ(cl.job.resolve.color.ocioConfig, "");
+  unsetenv("OCIO");
+  cl = parseCommandLine(plain);
+  useOcioEnvironmentUnlessGiven(cl, plain);
+  EXPECT_EQ(cl.job.resolve.color.ocioConfig, "");
 }
 
 TEST(CliOptions, ErrorsNameTheArgument) {

@@ -93,8 +93,8 @@ TEST_F(OcioBracketTest, UserConfigByPathAndByOcioVariable) {
   EXPECT_NEAR(pixel[1], 3.0f, 1e-5f);
 
   setenv("OCIO", path.c_str(), 1);
-  EXPECT_NE(loadConfig("").description.find("$OCIO"), std::string::npos);
-  options.ocioConfig.clear();
+  EXPECT_NE(loadConfig("$OCIO").description.find("$OCIO"), std::string::npos);
+  options.ocioConfig = "$OCIO";
   options.bracket = "halve";  // a named transform
   const OcioBracket byVariable(options);
   float named[3] = {4.0f, 9.0f, 16.0f};
@@ -102,6 +102,22 @@ TEST_F(OcioBracketTest, UserConfigByPathAndByOcioVariable) {
   EXPECT_NEAR(named[2], 8.0f, 1e-6f);
   byVariable.fromWorkingCpu()->applyRGB(named);
   EXPECT_NEAR(named[2], 16.0f, 1e-5f);
+}
+
+// Hosts set $OCIO to the studio's config, which has no taa_reinhard: an empty config name is
+// the shipped config whatever $OCIO says, and $OCIO is read only when asked for by name.
+TEST_F(OcioBracketTest, OcioVariableIsReadOnlyWhenAskedFor) {
+  const std::string path = writeUserConfig();
+  setenv("OCIO", path.c_str(), 1);
+  EXPECT_EQ(loadConfig("").description, "taa's shipped config");
+  ColorOptions options;  // the defaults: shipped config, taa_reinhard
+  EXPECT_NO_THROW(OcioBracket{options});
+  options.ocioConfig = "$OCIO";
+  EXPECT_NE(errorOf(options).find("$OCIO (" + path + ")"), std::string::npos) << errorOf(options);
+
+  unsetenv("OCIO");
+  const std::string message = errorOf(options);
+  EXPECT_NE(message.find("$OCIO is not set"), std::string::npos) << message;
 }
 
 TEST_F(OcioBracketTest, ErrorsNameTheConfigAndTheName) {
@@ -112,6 +128,9 @@ TEST_F(OcioBracketTest, ErrorsNameTheConfigAndTheName) {
   std::string message = errorOf(options);
   EXPECT_NE(message.find("no_such_space"), std::string::npos) << message;
   EXPECT_NE(message.find(path), std::string::npos) << message;
+  // ... and what the config offers instead.
+  EXPECT_NE(message.find("which offers the brackets none, "), std::string::npos) << message;
+  EXPECT_NE(message.find("gamma_half"), std::string::npos) << message;
 
   options.bracket = "clamped";
   message = errorOf(options);

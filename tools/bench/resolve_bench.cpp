@@ -55,6 +55,7 @@ int run(std::vector<std::string> args) {
     args.erase(args.begin(), args.begin() + 2);
   }
   cli::CommandLine cl = cli::parseCommandLine(args);
+  cli::useOcioEnvironmentUnlessGiven(cl, args);  // as taatool
   cli::resolveFrameList(cl);
   const SequenceJob& job = cl.job;
   const int count = int(std::min<std::size_t>(job.frames.size(), 4));

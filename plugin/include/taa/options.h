@@ -32,8 +32,9 @@ struct JitterOptions {
 // from `colorspaceIn` into the `bracket` working space, and its result is converted from the
 // working space into `colorspaceOut`. All fields are [program].
 struct ColorOptions {
-  // An OCIO config file. Empty: $OCIO if set, else taa's shipped config (ocio/config.ocio,
-  // embedded in the library).
+  // An OCIO config file. Empty: taa's shipped config (ocio/config.ocio, embedded in the
+  // library). "$OCIO": the config the OCIO environment variable names; only then is $OCIO
+  // read (taatool passes "$OCIO" when it is set and --ocio-config is not given).
   std::string ocioConfig;
   // Colorspace (or role) of the input colour.
   std::string colorspaceIn = "scene_linear";

@@ -123,6 +123,8 @@ TAA_API const char* taa_node_last_error(const taa_node* node);
  * - The resolve options, listed by `taatool --list-options` (e.g. "blend", "jitter",
  *   "jitter-offset", "rectify", "motion-dilation", "bracket"), take any of the three setters:
  *   the value is given to the option as taatool's text (ints as decimals, floats exactly).
+ *   The tonemap bracket's OCIO config is taa's shipped one unless "ocio-config" names a file,
+ *   or "$OCIO" for the config that variable names: $OCIO is never read otherwise.
  * - The node's input conventions are typed: "motion-y" down|up, "motion-to" previous|next
  *   (strings); "motion-scale", "depth-nohit" (floats); "reset-on-gap" 0/1 (int, default 1:
  *   history restarts when a frame is not the previous one + 1, as taatool does); "ndc"

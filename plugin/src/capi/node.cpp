@@ -7,11 +7,14 @@
 
 #include "capi/buffer_conversion.h"
 #include "capi/status_error.h"
+#include "gl/caller_context.h"
 #include "resolve/jitter.h"
 #include "taa/error.h"
 
 namespace taa::capi {
 
+// Binds the node's context for one call, then releases it and gives the calling thread back
+// the context it had (a host's own GL context must survive a call into taa).
 class Node::CurrentContext {
  public:
   explicit CurrentContext(gl::Context& context) : context_(context) { context_.makeCurrent(); }
@@ -26,6 +29,7 @@ class Node::CurrentContext {
   CurrentContext& operator=(const CurrentContext&) = delete;
 
  private:
+  gl::CallerContext caller_;  // restored after the release above
   gl::Context& context_;
 };
 
@@ -42,12 +46,13 @@ Node::~Node() {
 
 void Node::ensureContext() {
   if (context_) return;
+  const gl::CallerContext caller;  // create() binds the new context: give the caller theirs back
   try {
     context_ = gl::Context::create(backend_);
+    context_->releaseCurrent();  // create() leaves it current; each call binds it again
   } catch (const Error& e) {
     throw StatusError(TAA_ERROR_GL, e.what());
   }
-  context_->releaseCurrent();  // create() leaves it current; each call binds it again
 }
 
 void Node::setInt(const std::string& name, int value) {

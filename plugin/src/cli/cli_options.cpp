@@ -1,11 +1,14 @@
 #include "cli/cli_options.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 #include <functional>
 #include <map>
 #include <sstream>
 
+#include "color/ocio_bracket.h"
 #include "io/renderer_presets.h"
 #include "io/sequence_pattern.h"
 #include "io/sequence_scan.h"
@@ -281,6 +284,12 @@ CommandLine parseCommandLine(const std::vector<std::string>& args) {
     throw Error("--out-ch expects 4 channel names (R, G, B, A)");
   }
   return cl;
+}
+
+void useOcioEnvironmentUnlessGiven(CommandLine& cl, const std::vector<std::string>& args) {
+  const bool given = std::find(args.begin(), args.end(), "--ocio-config") != args.end();
+  const char* env = std::getenv("OCIO");
+  if (!given && env && *env) cl.job.resolve.color.ocioConfig = color::kOcioEnvironmentConfig;
 }
 
 void resolveFrameList(CommandLine& cl) {

@@ -22,14 +22,42 @@ std::string configError(const std::string& what, const LoadedConfig& loaded) {
   return what + " in the OCIO config " + loaded.description;
 }
 
-// The colorspace a name or role refers to, or throws naming both.
+// "a, b, c" for at most kMaxListed names, then how many more there are.
+std::string nameList(const std::vector<std::string>& names) {
+  constexpr std::size_t kMaxListed = 40;
+  std::string text;
+  for (std::size_t i = 0; i < names.size() && i < kMaxListed; ++i) {
+    text += (i ? ", " : "") + names[i];
+  }
+  if (names.size() > kMaxListed) {
+    text += " and " + std::to_string(names.size() - kMaxListed) + " more";
+  }
+  return text;
+}
+
+std::vector<std::string> colorSpaceNames(const OCIO::ConstConfigRcPtr& config) {
+  std::vector<std::string> names;
+  for (int i = 0; i < config->getNumColorSpaces(); ++i) {
+    names.push_back(config->getColorSpaceNameByIndex(i));
+  }
+  return names;
+}
+
+// The colorspace a name or role refers to, or throws naming both and what the config offers
+// for that purpose (brackets for the bracket, colorspaces otherwise): a studio config
+// rarely has the shipped config's names.
 std::string requireColorSpace(const LoadedConfig& loaded, const std::string& name,
                               const char* purpose) {
   OCIO::ConstColorSpaceRcPtr space = loaded.config->getColorSpace(name.c_str());
   if (!space) {
+    const bool bracket = std::string(purpose) == "bracket";
+    const std::vector<std::string> offered =
+        bracket ? listBrackets(loaded.config) : colorSpaceNames(loaded.config);
     throw Error(configError(std::string("unknown ") + purpose + " colorspace or role \"" + name +
                                 "\"",
-                            loaded));
+                            loaded) +
+                ", which offers " + (bracket ? "the brackets " : "the colorspaces ") +
+                nameList(offered));
   }
   return space->getName();
 }
@@ -83,12 +111,13 @@ OCIO::TransformRcPtr namedTransformIn(const OCIO::ConstNamedTransformRcPtr& name
 LoadedConfig loadConfig(const std::string& path) {
   LoadedConfig loaded;
   std::string file = path;
-  if (file.empty()) {
+  if (path == kOcioEnvironmentConfig) {
     const char* env = std::getenv("OCIO");
-    if (env && *env) {
-      file = env;
-      loaded.description = std::string("$OCIO (") + env + ")";
+    if (!env || !*env) {
+      throw Error("the OCIO config was asked for from $OCIO, but $OCIO is not set");
     }
+    file = env;
+    loaded.description = std::string("$OCIO (") + env + ")";
   } else {
     loaded.description = path;
   }

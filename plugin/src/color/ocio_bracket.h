@@ -23,8 +23,12 @@ struct LoadedConfig {
   std::string description;  // the path, "$OCIO (path)" or "taa's shipped config"
 };
 
-// Loads the config `ColorOptions::ocioConfig` names (empty: $OCIO, else the shipped one).
-// Throws taa::Error naming the file for an unreadable or invalid config.
+// The ColorOptions::ocioConfig value that means "the config $OCIO names".
+inline constexpr const char* kOcioEnvironmentConfig = "$OCIO";
+
+// Loads the config `ColorOptions::ocioConfig` names: empty is taa's shipped config,
+// kOcioEnvironmentConfig the one $OCIO names, anything else a file. Throws taa::Error naming
+// the file for an unreadable or invalid config, and for "$OCIO" when $OCIO is not set.
 LoadedConfig loadConfig(const std::string& path);
 
 // The bracket names a config offers: its colorspaces (not data spaces) and named transforms.

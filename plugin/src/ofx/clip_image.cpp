@@ -1,5 +1,9 @@
 #include "ofx/clip_image.h"
 
+#include <Imath/half.h>
+
+#include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <stdexcept>
 
@@ -7,9 +11,19 @@
 
 namespace taa::ofx {
 
+namespace {
+
+std::string frameText(OfxTime time) {
+  const double rounded = std::round(time);
+  return rounded == time ? std::to_string(std::lround(time)) : std::to_string(time);
+}
+
+}  // namespace
+
 ClipImage::ClipImage(OfxImageClipHandle clip, OfxTime time, const std::string& clipName) {
   const HostSuites& s = suites();
-  const std::string where = clipName + " clip at frame " + std::to_string(time);
+  where_ = clipName + " clip at frame " + frameText(time);
+  const std::string& where = where_;
   if (s.effects->clipGetImage(clip, time, nullptr, &image_) != kOfxStatOK || !image_) {
     image_ = nullptr;
     throw std::runtime_error("the host gave no image for the " + where);
@@ -22,6 +36,10 @@ ClipImage::ClipImage(OfxImageClipHandle clip, OfxTime time, const std::string& c
   s.properties->propGetInt(image_, kOfxImagePropRowBytes, 0, &rowBytes_);
   s.properties->propGetString(image_, kOfxImageEffectPropPixelDepth, 0, &depth);
   s.properties->propGetString(image_, kOfxImageEffectPropComponents, 0, &components);
+  if (s.properties->propGetDouble(image_, kOfxImagePropPixelAspectRatio, 0,
+                                  &pixelAspectRatio_) != kOfxStatOK) {
+    pixelAspectRatio_ = 1.0;  // hosts that never leave square pixels may not say
+  }
   data_ = static_cast<char*>(data);
   const std::string depthName = depth ? depth : "";
   const std::string componentName = components ? components : "";
@@ -67,6 +85,20 @@ taa_buffer ClipImage::buffer(int firstChannel, int channels) const {
   return b;
 }
 
+float ClipImage::value(int x, int y, int c) const {
+  const char* at = pixelAddress(x, y) + c * (half_ ? 2 : 4);
+  if (half_) {
+    std::uint16_t bits;
+    std::memcpy(&bits, at, 2);
+    Imath::half h;
+    h.setBits(bits);
+    return float(h);
+  }
+  float v;
+  std::memcpy(&v, at, 4);
+  return v;
+}
+
 bool isConnected(OfxImageClipHandle clip) {
   const HostSuites& s = suites();
   OfxPropertySetHandle props = nullptr;
@@ -74,6 +106,29 @@ bool isConnected(OfxImageClipHandle clip) {
   int connected = 0;
   s.properties->propGetInt(props, kOfxImageClipPropConnected, 0, &connected);
   return connected != 0;
+}
+
+std::string unmappedComponents(OfxImageClipHandle clip) {
+  const HostSuites& s = suites();
+  OfxPropertySetHandle props = nullptr;
+  char* components = nullptr;
+  if (!clip || s.effects->clipGetPropertySet(clip, &props) != kOfxStatOK) return "";
+  if (s.properties->propGetString(props, kOfxImageClipPropUnmappedComponents, 0, &components) !=
+      kOfxStatOK) {
+    return "";
+  }
+  return components ? components : "";
+}
+
+OfxRangeD clipFrameRange(OfxImageClipHandle clip, double fallback) {
+  const HostSuites& s = suites();
+  OfxPropertySetHandle props = nullptr;
+  double range[2] = {fallback, fallback};
+  if (clip && s.effects->clipGetPropertySet(clip, &props) == kOfxStatOK &&
+      s.properties->propGetDoubleN(props, kOfxImageEffectPropFrameRange, 2, range) != kOfxStatOK) {
+    range[0] = range[1] = fallback;
+  }
+  return {range[0], range[1]};
 }
 
 }  // namespace taa::ofx

@@ -4,6 +4,7 @@
 
 #include "ofx/host_suites.h"
 #include "ofx/plugin_parameters.h"
+#include "ofx/temporal_plan.h"
 
 namespace taa::ofx {
 namespace {
@@ -48,6 +49,13 @@ OfxStatus describe(OfxImageEffectHandle descriptor) {
   s.properties->propSetInt(props, kOfxImageEffectPropSupportsTiles, 0, 0);
   s.properties->propSetInt(props, kOfxImageEffectPropSupportsMultiResolution, 0, 1);
   s.properties->propSetInt(props, kOfxImageEffectPropSupportsMultipleClipDepths, 0, 1);
+  // Depth and motion are in pixels of the colour's grid: the host conforms every clip to one
+  // pixel aspect ratio.
+  s.properties->propSetInt(props, kOfxImageEffectPropSupportsMultipleClipPARs, 0, 0);
+  // The default parameters resolve from the clip's first frame: a host must render in order
+  // (each instance updates this for its own settings, temporal_plan.h).
+  s.properties->propSetInt(props, kOfxImageEffectInstancePropSequentialRender, 0,
+                           sequentialRender(PluginSettings{}));
   s.properties->propSetInt(props, kOfxImageEffectPluginPropHostFrameThreading, 0, 0);
   // Each render thread gets its own node and GL context, so concurrent renders are safe.
   s.properties->propSetString(props, kOfxImageEffectPluginRenderThreadSafety, 0,

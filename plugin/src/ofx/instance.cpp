@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "ofx/aux_buffer.h"
 #include "ofx/clip_image.h"
 #include "ofx/describe.h"
 #include "ofx/host_suites.h"
@@ -24,16 +25,35 @@ OfxImageClipHandle clipHandle(OfxImageEffectHandle effect, const char* name) {
   return clip;
 }
 
-bool sameRect(const OfxRectI& a, const OfxRectI& b) {
-  return a.x1 == b.x1 && a.y1 == b.y1 && a.x2 == b.x2 && a.y2 == b.y2;
+std::string number(double value) {
+  std::string text = std::to_string(value);
+  text.erase(text.find_last_not_of('0') + 1);
+  if (!text.empty() && text.back() == '.') text.pop_back();
+  return text;
 }
 
-std::string rectText(const OfxRectI& r) {
-  return "(" + std::to_string(r.x1) + ", " + std::to_string(r.y1) + ")-(" + std::to_string(r.x2) +
-         ", " + std::to_string(r.y2) + ")";
+// Depth and motion are in pixels of the colour's grid: a host that gives their clips another
+// pixel aspect ratio than the Source's has resampled one of them (taa declares no support for
+// several ratios, so hosts should conform them all).
+void requireSamePixelAspect(const ClipImage& aux, const ClipImage& color) {
+  if (aux.pixelAspectRatio() != color.pixelAspectRatio()) {
+    throw std::runtime_error("the " + aux.where() + " has pixel aspect ratio " +
+                             number(aux.pixelAspectRatio()) + ", the Source clip " +
+                             number(color.pixelAspectRatio()) +
+                             ": depth and motion must be on the colour's pixel grid");
+  }
 }
 
 }  // namespace
+
+Instance::ThreadHistory::~ThreadHistory() { forget(); }
+
+void Instance::ThreadHistory::forget() {
+  if (node) taa_node_destroy(node);
+  node = nullptr;
+  lastFrame.reset();
+  settings.reset();
+}
 
 Instance::Instance(OfxImageEffectHandle effect) : effect_(effect) {
   source_ = clipHandle(effect, kOfxImageEffectSimpleSourceClipName);
@@ -42,90 +62,99 @@ Instance::Instance(OfxImageEffectHandle effect) : effect_(effect) {
   output_ = clipHandle(effect, kOfxImageEffectOutputClipName);
 }
 
-Instance::~Instance() {
-  for (auto& entry : histories_) taa_node_destroy(entry.second->node);
+Instance::~Instance() = default;
+
+FrameRange Instance::sourceRange(int frame) const {
+  const OfxRangeD range = clipFrameRange(source_, frame);
+  return {int(std::lround(range.min)), int(std::lround(range.max))};
 }
 
-int Instance::firstFrame(int frame, const PluginSettings& settings) const {
-  const HostSuites& s = suites();
-  OfxPropertySetHandle props = nullptr;
-  double range[2] = {double(frame), double(frame)};
-  if (s.effects->clipGetPropertySet(source_, &props) == kOfxStatOK) {
-    s.properties->propGetDoubleN(props, kOfxImageEffectPropFrameRange, 2, range);
-  }
-  int first = int(std::lround(range[0]));
-  if (settings.historyFrames > 0) first = std::max(first, frame - settings.historyFrames + 1);
-  return std::min(first, frame);
-}
-
-OfxRangeD Instance::framesNeeded(OfxTime time) const {
+TemporalPlan Instance::plan(OfxTime time) const {
   const int frame = int(std::lround(time));
-  const PluginSettings settings = readSettings(effect_, time);
-  return {double(firstFrame(frame, settings)), double(frame)};
+  return planFrame(frame, readSettings(effect_, time), sourceRange(frame));
 }
 
-Instance::ThreadHistory& Instance::historyOfThisThread() {
+std::shared_ptr<Instance::ThreadHistory> Instance::historyOfThisThread() {
   std::lock_guard<std::mutex> lock(historiesMutex_);
   auto& slot = histories_[std::this_thread::get_id()];
-  if (!slot) {
-    taa_node* node = nullptr;
-    if (taa_node_create(nullptr, &node) != TAA_OK) throw std::runtime_error(taa_last_error());
-    slot = std::make_unique<ThreadHistory>();
-    slot->node = node;
-  }
-  return *slot;
+  if (!slot) slot = std::make_shared<ThreadHistory>();
+  return slot;
 }
 
-void Instance::pushFrame(ThreadHistory& history, int frame) const {
+void Instance::purgeCaches() {
+  std::map<std::thread::id, std::shared_ptr<ThreadHistory>> taken;
+  {
+    std::lock_guard<std::mutex> lock(historiesMutex_);
+    taken.swap(histories_);
+  }
+  for (auto& entry : taken) {
+    std::lock_guard<std::mutex> lock(entry.second->mutex);
+    entry.second->forget();
+  }
+}
+
+void Instance::pushFrame(ThreadHistory& history, int frame, const PluginSettings& settings,
+                         RenderScale scale) const {
   const ClipImage color(source_, frame, kOfxImageEffectSimpleSourceClipName);
   std::optional<ClipImage> depth, motion;
   if (isConnected(depth_)) depth.emplace(depth_, frame, kDepthClip);
   if (isConnected(motion_)) motion.emplace(motion_, frame, kMotionClip);
-  for (const ClipImage* aux : {depth ? &*depth : nullptr, motion ? &*motion : nullptr}) {
-    if (aux && !sameRect(aux->bounds(), color.bounds())) {
-      throw std::runtime_error("frame " + std::to_string(frame) +
-                               ": depth/motion bounds " + rectText(aux->bounds()) +
-                               " differ from the source's " + rectText(color.bounds()));
-    }
-  }
+  if (depth) requireSamePixelAspect(*depth, color);
+  if (motion) requireSamePixelAspect(*motion, color);
   if (motion && motion->components() < 2) {
-    throw std::runtime_error("the Motion clip needs RGB or RGBA (vectors in R, G)");
+    throw std::runtime_error("the " + motion->where() +
+                             " has one channel: motion vectors need RGB or RGBA (x in R, y in G)");
   }
+  const OfxRectI& bounds = color.bounds();
   const taa_buffer colorBuffer = color.buffer(0, std::min(color.components(), 4));
-  taa_buffer depthBuffer{}, motionBuffer{};
+  std::optional<AuxBuffer> depthBuffer, motionBuffer;
+  if (depth) {
+    depthBuffer.emplace(*depth, depthChannel(*depth, unmappedComponents(depth_)), 1, bounds,
+                        INFINITY);  // no hit where the host has no depth
+  }
+  if (motion) {
+    // The node scales both components by the x render scale; y needs the y scale.
+    motionBuffer.emplace(*motion, 0, 2, bounds, 0.0f, float(scale.y / scale.x));
+  }
   taa_frame input;
   taa_frame_init(&input);
   input.frame = frame;
   input.color = &colorBuffer;
-  if (depth) {
-    // Alpha images carry depth in their one channel, colour images in R.
-    depthBuffer = depth->buffer(0, 1);
-    input.depth = &depthBuffer;
-  }
-  if (motion) {
-    motionBuffer = motion->buffer(0, 2);
-    input.motion = &motionBuffer;
-  }
+  input.depth = depthBuffer ? &depthBuffer->buffer() : nullptr;
+  input.motion = motionBuffer ? &motionBuffer->buffer() : nullptr;
+  input.has_jitter = 1;
+  frameJitter(settings, frame, scale, input.jitter);
   if (taa_node_push_frame(history.node, &input) != TAA_OK) {
     throw std::runtime_error(taa_node_last_error(history.node));
   }
-  history.bounds = color.bounds();
+  history.bounds = bounds;
 }
 
-void Instance::render(OfxTime time, const OfxRectI& window, double renderScaleX) {
-  const int frame = int(std::lround(time));
+void Instance::render(OfxTime time, const OfxRectI& window, RenderScale scale) {
+  if (!(scale.x > 0.0 && scale.y > 0.0)) {
+    throw std::runtime_error("render scale (" + number(scale.x) + ", " + number(scale.y) +
+                             ") must be positive");
+  }
+  const int requested = int(std::lround(time));
   const PluginSettings settings = readSettings(effect_, time);
-  const int start = firstFrame(frame, settings);
-  ThreadHistory& history = historyOfThisThread();
+  const TemporalPlan plan = planFrame(requested, settings, sourceRange(requested));
+  const std::shared_ptr<ThreadHistory> slot = historyOfThisThread();
+  ThreadHistory& history = *slot;
+  std::lock_guard<std::mutex> lock(history.mutex);
+  if (!history.node && taa_node_create(nullptr, &history.node) != TAA_OK) {
+    throw std::runtime_error(taa_last_error());
+  }
 
   const bool sameSetup = history.settings && *history.settings == settings &&
-                         history.renderScale == renderScaleX && history.startFrame == start;
+                         history.scale == scale && history.startFrame == plan.frames.first;
   if (!sameSetup) {
-    applySettings(history.node, settings, renderScaleX);
-    history.settings = settings;
-    history.renderScale = renderScaleX;
     history.lastFrame.reset();
+    history.settings.reset();  // until applied
+    applySettings(history.node, settings, scale);
+    history.settings = settings;
+    history.scale = scale;
   }
+  const int frame = plan.frames.last;
   const bool holdsFrame = sameSetup && history.lastFrame == frame;
   const bool continues = sameSetup && history.lastFrame && *history.lastFrame + 1 == frame;
   if (!holdsFrame) {
@@ -134,20 +163,21 @@ void Instance::render(OfxTime time, const OfxRectI& window, double renderScaleX)
       if (taa_node_reset_history(history.node) != TAA_OK) {
         throw std::runtime_error(taa_node_last_error(history.node));
       }
-      from = start;
+      from = plan.frames.first;
     }
     history.lastFrame.reset();  // until every frame below is in
     for (int f = from; f <= frame; ++f) {
       if (suites().effects->abort(effect_)) throw std::runtime_error("render aborted by host");
-      pushFrame(history, f);
+      pushFrame(history, f, settings, scale);
     }
-    history.startFrame = start;
+    history.startFrame = plan.frames.first;
     history.lastFrame = frame;
   }
   writeOutput(history, time, window);
 }
 
-void Instance::writeOutput(ThreadHistory& history, OfxTime time, const OfxRectI& window) const {
+void Instance::writeOutput(const ThreadHistory& history, OfxTime time,
+                           const OfxRectI& window) const {
   // The resolved frame over the source bounds, y-up like the host's images.
   const OfxRectI& src = history.bounds;
   const int width = src.x2 - src.x1, height = src.y2 - src.y1;

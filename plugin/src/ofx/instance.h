@@ -1,9 +1,10 @@
 // One effect instance. History: the output at frame t is, by definition, what taatool gives for
 // t when resolving the clip from its first frame (or, with History Frames = N > 0, from frame
-// t - N + 1) up to t. Each render thread keeps its own C ABI node (its own GL context) with the
-// state after the last frame it rendered; when the host asks for t right after t - 1 on that
-// thread with the same settings, only frame t is pushed, otherwise the node is reset and
-// frames start..t are pushed again (the frames-needed action asks the host for them).
+// t - N + 1) up to t (temporal_plan.h decides the frames). Each render thread keeps its own C
+// ABI node (its own GL context) with the state after the last frame it rendered; when the host
+// asks for t right after t - 1 on that thread with the same settings, only frame t is pushed,
+// otherwise the node is reset and the plan's frames are pushed again (the frames-needed action
+// asks the host for them).
 #pragma once
 
 #include <map>
@@ -14,6 +15,7 @@
 
 #include "ofx/ofx_abi.h"
 #include "ofx/plugin_parameters.h"
+#include "ofx/temporal_plan.h"
 #include "taa/taa.h"
 
 namespace taa::ofx {
@@ -25,31 +27,39 @@ class Instance {
   Instance(const Instance&) = delete;
   Instance& operator=(const Instance&) = delete;
 
-  // The frames frame `time` is resolved from: [first, time].
-  OfxRangeD framesNeeded(OfxTime time) const;
+  // The plan for output frame `time` with the parameters' values at that time.
+  TemporalPlan plan(OfxTime time) const;
 
   // Renders `window` of the output at `time`. Throws std::runtime_error on failure.
-  void render(OfxTime time, const OfxRectI& window, double renderScaleX);
+  void render(OfxTime time, const OfxRectI& window, RenderScale scale);
+
+  // Frees every thread's node (GL context, history textures); the next render of each thread
+  // starts from its plan's first frame. Waits for renders in progress.
+  void purgeCaches();
 
  private:
   struct ThreadHistory {
+    std::mutex mutex;              // held by the render using it, and by purgeCaches
     taa_node* node = nullptr;
     std::optional<int> lastFrame;  // frame whose result the node holds
     int startFrame = 0;            // the frame that history started from
     std::optional<PluginSettings> settings;
-    double renderScale = 1.0;
+    RenderScale scale;
     OfxRectI bounds{};
+    ~ThreadHistory();
+    void forget();  // destroys the node and what it held
   };
 
-  int firstFrame(int frame, const PluginSettings& settings) const;
-  ThreadHistory& historyOfThisThread();
-  void pushFrame(ThreadHistory& history, int frame) const;
-  void writeOutput(ThreadHistory& history, OfxTime time, const OfxRectI& window) const;
+  FrameRange sourceRange(int frame) const;  // the Source clip's, [frame, frame] if unknown
+  std::shared_ptr<ThreadHistory> historyOfThisThread();
+  void pushFrame(ThreadHistory& history, int frame, const PluginSettings& settings,
+                 RenderScale scale) const;
+  void writeOutput(const ThreadHistory& history, OfxTime time, const OfxRectI& window) const;
 
   OfxImageEffectHandle effect_;
   OfxImageClipHandle source_ = nullptr, depth_ = nullptr, motion_ = nullptr, output_ = nullptr;
   std::mutex historiesMutex_;
-  std::map<std::thread::id, std::unique_ptr<ThreadHistory>> histories_;
+  std::map<std::thread::id, std::shared_ptr<ThreadHistory>> histories_;
 };
 
 }  // namespace taa::ofx

@@ -108,7 +108,20 @@ struct OfxMessageSuiteV1 {
                        const char* format, ...);
 };
 
+// Version 2 begins with version 1's member: a host may return one struct for both.
+struct OfxMessageSuiteV2 {
+  OfxStatus (*message)(void* handle, const char* messageType, const char* messageId,
+                       const char* format, ...);
+  OfxStatus (*setPersistentMessage)(void* handle, const char* messageType,
+                                    const char* messageId, const char* format, ...);
+  OfxStatus (*clearPersistentMessage)(void* handle);
+};
+
 }  // extern "C"
+
+// The two functions a bundle binary exports, by name.
+#define kOfxGetNumberOfPluginsSymbol "OfxGetNumberOfPlugins"
+#define kOfxGetPluginSymbol "OfxGetPlugin"
 
 // Status codes.
 #define kOfxStatOK 0
@@ -139,6 +152,7 @@ struct OfxMessageSuiteV1 {
 #define kOfxActionCreateInstance "OfxActionCreateInstance"
 #define kOfxActionDestroyInstance "OfxActionDestroyInstance"
 #define kOfxActionPurgeCaches "OfxActionPurgeCaches"
+#define kOfxActionInstanceChanged "OfxActionInstanceChanged"
 #define kOfxImageEffectActionDescribeInContext "OfxImageEffectActionDescribeInContext"
 #define kOfxImageEffectActionGetFramesNeeded "OfxImageEffectActionGetFramesNeeded"
 #define kOfxImageEffectActionGetClipPreferences "OfxImageEffectActionGetClipPreferences"
@@ -154,12 +168,20 @@ struct OfxMessageSuiteV1 {
 #define kOfxImageComponentRGBA "OfxImageComponentRGBA"
 #define kOfxImageComponentRGB "OfxImageComponentRGB"
 #define kOfxImageComponentAlpha "OfxImageComponentAlpha"
-#define kOfxImagePreMultiplied "OfxImagePreMultiplied"
+#define kOfxImageComponentNone "OfxImageComponentNone"
+// Premultiplication states. The macro names say "PreMultiplied", the values "AlphaPremultiplied".
+#define kOfxImageOpaque "OfxImageOpaque"
+#define kOfxImagePreMultiplied "OfxImageAlphaPremultiplied"
+#define kOfxImageUnPreMultiplied "OfxImageAlphaUnPremultiplied"
+#define kOfxImageFieldNone "OfxFieldNone"
 #define kOfxImageEffectRenderFullySafe "OfxImageEffectRenderFullySafe"
 #define kOfxMessageError "OfxMessageError"
+#define kOfxMessageWarning "OfxMessageWarning"
+#define kOfxTypeParameter "OfxTypeParameter"
 
 // Properties.
 #define kOfxPropName "OfxPropName"
+#define kOfxPropType "OfxPropType"
 #define kOfxPropLabel "OfxPropLabel"
 #define kOfxPropTime "OfxPropTime"
 #define kOfxPropInstanceData "OfxPropInstanceData"
@@ -171,30 +193,42 @@ struct OfxMessageSuiteV1 {
 #define kOfxImageEffectPropTemporalClipAccess "OfxImageEffectPropTemporalClipAccess"
 #define kOfxImageEffectPropSupportsTiles "OfxImageEffectPropSupportsTiles"
 #define kOfxImageEffectPropSupportsMultiResolution "OfxImageEffectPropSupportsMultiResolution"
-#define kOfxImageEffectPropSupportsMultipleClipDepths \
-  "OfxImageEffectPropSupportsMultipleClipDepths"
+// The macro name says "Supports", the property's name does not.
+#define kOfxImageEffectPropSupportsMultipleClipDepths "OfxImageEffectPropMultipleClipDepths"
+#define kOfxImageEffectPropSupportsMultipleClipPARs "OfxImageEffectPropSupportsMultipleClipPARs"
+#define kOfxImageEffectInstancePropSequentialRender "OfxImageEffectInstancePropSequentialRender"
+#define kOfxImageEffectFrameVarying "OfxImageEffectFrameVarying"
 #define kOfxImageEffectPluginPropGrouping "OfxImageEffectPluginPropGrouping"
 #define kOfxImageEffectPluginPropHostFrameThreading "OfxImageEffectPluginPropHostFrameThreading"
 #define kOfxImageEffectPluginRenderThreadSafety "OfxImageEffectPluginRenderThreadSafety"
 #define kOfxImageEffectPropFrameRange "OfxImageEffectPropFrameRange"
 #define kOfxImageEffectPropRenderScale "OfxImageEffectPropRenderScale"
 #define kOfxImageEffectPropRenderWindow "OfxImageEffectPropRenderWindow"
+#define kOfxImageEffectPropFieldToRender "OfxImageEffectPropFieldToRender"
 #define kOfxImageEffectPropPixelDepth "OfxImageEffectPropPixelDepth"
 #define kOfxImageEffectPropComponents "OfxImageEffectPropComponents"
 #define kOfxImageEffectPropPreMultiplication "OfxImageEffectPropPreMultiplication"
 #define kOfxImageClipPropOptional "OfxImageClipPropOptional"
 #define kOfxImageClipPropConnected "OfxImageClipPropConnected"
+#define kOfxImageClipPropUnmappedComponents "OfxImageClipPropUnmappedComponents"
+#define kOfxImagePropPixelAspectRatio "OfxImagePropPixelAspectRatio"
 #define kOfxImagePropData "OfxImagePropData"
 #define kOfxImagePropBounds "OfxImagePropBounds"
 #define kOfxImagePropRowBytes "OfxImagePropRowBytes"
-// Frames needed: one property per input clip, this prefix + the clip name, pairs of doubles.
+// Per-clip arguments are named by a prefix + the clip's name. The specification names these
+// properties by their text only; the macro names here are taa's.
+// Frames needed: pairs of doubles per input clip.
 #define kOfxImageClipPropFrameRangePrefix "OfxImageClipPropFrameRange_"
+// Clip preferences: the components and pixel aspect ratio a clip is to be mapped to.
+#define kOfxImageClipPropComponentsPrefix "OfxImageClipPropComponents_"
+#define kOfxImageClipPropPARPrefix "OfxImageClipPropPAR_"
 
 // Parameters.
 #define kOfxParamTypeDouble "OfxParamTypeDouble"
 #define kOfxParamTypeInteger "OfxParamTypeInteger"
 #define kOfxParamTypeBoolean "OfxParamTypeBoolean"
 #define kOfxParamTypeChoice "OfxParamTypeChoice"
+#define kOfxParamTypeString "OfxParamTypeString"
 #define kOfxParamPropDefault "OfxParamPropDefault"
 #define kOfxParamPropMin "OfxParamPropMin"
 #define kOfxParamPropMax "OfxParamPropMax"
@@ -203,3 +237,7 @@ struct OfxMessageSuiteV1 {
 #define kOfxParamPropHint "OfxParamPropHint"
 #define kOfxParamPropChoiceOption "OfxParamPropChoiceOption"
 #define kOfxParamPropAnimates "OfxParamPropAnimates"
+#define kOfxParamPropStringMode "OfxParamPropStringMode"
+#define kOfxParamPropStringFilePathExists "OfxParamPropStringFilePathExists"
+#define kOfxParamStringIsSingleLine "OfxParamStringIsSingleLine"
+#define kOfxParamStringIsFilePath "OfxParamStringIsFilePath"

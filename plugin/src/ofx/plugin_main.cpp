@@ -6,6 +6,8 @@
 #include <exception>
 #include <string>
 
+#include "ofx/clip_preferences.h"
+#include "ofx/color_check.h"
 #include "ofx/describe.h"
 #include "ofx/host_suites.h"
 #include "ofx/instance.h"
@@ -22,11 +24,33 @@ Instance* instanceOf(OfxImageEffectHandle effect) {
   return static_cast<Instance*>(data);
 }
 
+// The instance's SequentialRender for its current settings (temporal_plan.h).
+void updateSequentialRender(OfxImageEffectHandle effect) {
+  OfxPropertySetHandle props = nullptr;
+  if (suites().effects->getPropertySet(effect, &props) != kOfxStatOK) return;
+  const PluginSettings settings = readSettings(effect, 0.0);
+  suites().properties->propSetInt(props, kOfxImageEffectInstancePropSequentialRender, 0,
+                                  sequentialRender(settings));
+}
+
+// A bracket the chosen config lacks (a studio config has no taa_reinhard) is reported on the
+// effect as soon as the settings say so, not at the first render.
+void checkColorSettings(OfxImageEffectHandle effect) {
+  const std::string problem = colorSettingsProblem(readSettings(effect, 0.0));
+  if (problem.empty()) {
+    clearError(effect);
+  } else {
+    reportError(effect, ("TAA Resolve: " + problem).c_str());
+  }
+}
+
 OfxStatus createInstance(OfxImageEffectHandle effect) {
   OfxPropertySetHandle props = nullptr;
   if (suites().effects->getPropertySet(effect, &props) != kOfxStatOK) return kOfxStatErrBadHandle;
   auto* instance = new Instance(effect);
   suites().properties->propSetPointer(props, kOfxPropInstanceData, 0, instance);
+  updateSequentialRender(effect);
+  checkColorSettings(effect);
   return kOfxStatOK;
 }
 
@@ -40,24 +64,37 @@ OfxStatus destroyInstance(OfxImageEffectHandle effect) {
   return kOfxStatOK;
 }
 
+OfxStatus instanceChanged(OfxImageEffectHandle effect, OfxPropertySetHandle inArgs) {
+  if (!instanceOf(effect)) return kOfxStatErrBadHandle;
+  char* type = nullptr;
+  char* name = nullptr;
+  suites().properties->propGetString(inArgs, kOfxPropType, 0, &type);
+  suites().properties->propGetString(inArgs, kOfxPropName, 0, &name);
+  if (!type || std::string(type) != kOfxTypeParameter || !name) return kOfxStatReplyDefault;
+  updateSequentialRender(effect);
+  if (isColorParameter(name)) checkColorSettings(effect);
+  return kOfxStatOK;
+}
+
+OfxStatus purgeCaches(OfxImageEffectHandle effect) {
+  Instance* instance = instanceOf(effect);
+  if (!instance) return kOfxStatErrBadHandle;
+  instance->purgeCaches();
+  return kOfxStatOK;
+}
+
 OfxStatus framesNeeded(OfxImageEffectHandle effect, OfxPropertySetHandle inArgs,
                        OfxPropertySetHandle outArgs) {
   Instance* instance = instanceOf(effect);
   if (!instance) return kOfxStatErrBadHandle;
   double time = 0.0;
   suites().properties->propGetDouble(inArgs, kOfxPropTime, 0, &time);
-  const OfxRangeD range = instance->framesNeeded(time);
-  const double values[2] = {range.min, range.max};
+  const FrameRange frames = instance->plan(time).frames;
+  const double values[2] = {double(frames.first), double(frames.last)};
   for (const char* clip : {kOfxImageEffectSimpleSourceClipName, kDepthClip, kMotionClip}) {
     const std::string name = std::string(kOfxImageClipPropFrameRangePrefix) + clip;
     suites().properties->propSetDoubleN(outArgs, name.c_str(), 2, values);
   }
-  return kOfxStatOK;
-}
-
-OfxStatus clipPreferences(OfxPropertySetHandle outArgs) {
-  suites().properties->propSetString(outArgs, kOfxImageEffectPropPreMultiplication, 0,
-                                     kOfxImagePreMultiplied);
   return kOfxStatOK;
 }
 
@@ -71,7 +108,8 @@ OfxStatus render(OfxImageEffectHandle effect, OfxPropertySetHandle inArgs) {
   s.properties->propGetDouble(inArgs, kOfxPropTime, 0, &time);
   s.properties->propGetDoubleN(inArgs, kOfxImageEffectPropRenderScale, 2, scale);
   s.properties->propGetIntN(inArgs, kOfxImageEffectPropRenderWindow, 4, &window.x1);
-  instance->render(time, window, scale[0]);
+  instance->render(time, window, RenderScale{scale[0], scale[1]});
+  clearError(effect);  // whatever a failed render left on the effect no longer holds
   return kOfxStatOK;
 }
 
@@ -84,8 +122,10 @@ OfxStatus dispatch(const char* action, OfxImageEffectHandle effect, OfxPropertyS
   if (a == kOfxImageEffectActionDescribeInContext) return describeInContext(effect);
   if (a == kOfxActionCreateInstance) return createInstance(effect);
   if (a == kOfxActionDestroyInstance) return destroyInstance(effect);
+  if (a == kOfxActionInstanceChanged) return instanceChanged(effect, inArgs);
+  if (a == kOfxActionPurgeCaches) return purgeCaches(effect);
   if (a == kOfxImageEffectActionGetFramesNeeded) return framesNeeded(effect, inArgs, outArgs);
-  if (a == kOfxImageEffectActionGetClipPreferences) return clipPreferences(outArgs);
+  if (a == kOfxImageEffectActionGetClipPreferences) return clipPreferences(effect, outArgs);
   if (a == kOfxImageEffectActionRender) return render(effect, inArgs);
   return kOfxStatReplyDefault;
 }

@@ -5,7 +5,9 @@
 #include <tuple>
 #include <vector>
 
+#include "color/ocio_bracket.h"
 #include "ofx/host_suites.h"
+#include "resolve/jitter.h"
 #include "resolve/option_registry.h"
 
 namespace taa::ofx {
@@ -25,6 +27,11 @@ constexpr const char* kMotionTo = "motionTo";
 constexpr const char* kMotionScale = "motionScale";
 constexpr const char* kDepthNoHit = "depthNoHit";
 constexpr const char* kHistoryFrames = "historyFrames";
+constexpr const char* kOcioConfigSource = "ocioConfigSource";
+constexpr const char* kOcioConfigFile = "ocioConfigFile";
+constexpr const char* kColorspaceIn = "colorspaceIn";
+constexpr const char* kBracket = "bracket";
+constexpr const char* kColorspaceOut = "colorspaceOut";
 
 void check(OfxStatus status, const std::string& what) {
   if (status != kOfxStatOK) {
@@ -79,6 +86,16 @@ void defineChoice(OfxParamSetHandle set, const char* name, const char* label, co
   s.properties->propSetInt(props, kOfxParamPropDefault, 0, defaultIndex);
 }
 
+void defineString(OfxParamSetHandle set, const char* name, const char* label, const char* hint,
+                  const std::string& value, bool filePath = false) {
+  const HostSuites& s = suites();
+  OfxPropertySetHandle props = define(set, kOfxParamTypeString, name, label, hint);
+  s.properties->propSetString(props, kOfxParamPropDefault, 0, value.c_str());
+  s.properties->propSetString(props, kOfxParamPropStringMode, 0,
+                              filePath ? kOfxParamStringIsFilePath : kOfxParamStringIsSingleLine);
+  if (filePath) s.properties->propSetInt(props, kOfxParamPropStringFilePathExists, 0, 1);
+}
+
 // Index of the library's default for a registry option among `names` (the host's choice order).
 int registryDefaultIndex(const char* option, const char* const* names, int count) {
   const std::string value = taa::resolveOptionValue(taa::ResolveOptions{}, option);
@@ -102,6 +119,13 @@ double getDouble(OfxParamSetHandle set, const char* name, OfxTime time) {
   return value;
 }
 
+std::string getString(OfxParamSetHandle set, const char* name, OfxTime time) {
+  char* value = nullptr;  // the host's; valid until the next call
+  check(suites().parameters->paramGetValueAtTime(handle(set, name), time, &value),
+        std::string("value of ") + name);
+  return value ? value : "";
+}
+
 int getInt(OfxParamSetHandle set, const char* name, OfxTime time) {
   int value = 0;
   check(suites().parameters->paramGetValueAtTime(handle(set, name), time, &value),
@@ -119,7 +143,8 @@ bool PluginSettings::operator==(const PluginSettings& o) const {
   auto tie = [](const PluginSettings& s) {
     return std::tie(s.blend, s.rectify, s.dilateMotion, s.jitter, s.jitterOffset,
                     s.jitterPeriod, s.motionY, s.motionTo, s.motionScale, s.depthNoHit,
-                    s.historyFrames);
+                    s.historyFrames, s.ocioConfigSource, s.ocioConfigFile, s.colorspaceIn,
+                    s.bracket, s.colorspaceOut);
   };
   return tie(*this) == tie(o);
 }
@@ -157,6 +182,61 @@ void defineParameters(OfxParamSetHandle set) {
             "0: every frame is resolved from the clip's first frame, exactly as taatool. "
             "N: from at most N frames back (faster for random access, approximate).",
             0, 0, 100000);
+  defineChoice(set, kOcioConfigSource, "OCIO Config",
+               "Config of the tonemap bracket: taa's shipped one (its brackets taa_reinhard and "
+               "taa_log2), the one $OCIO names, or a file. $OCIO is read only when chosen here.",
+               {"taa (shipped)", "$OCIO", "File"});
+  defineString(set, kOcioConfigFile, "OCIO Config File",
+               "The OCIO config when OCIO Config is File (taatool --ocio-config).", "", true);
+  const taa::ColorOptions color;
+  defineString(set, kColorspaceIn, "Input Colorspace",
+               "Colorspace or role of the Source clip's colour (taatool --colorspace-in).",
+               color.colorspaceIn);
+  defineString(set, kBracket, "Bracket",
+               "Working space of the resolve: a colorspace or named transform of the config, or "
+               "none (taatool --bracket). A name the config lacks is reported with the names it "
+               "offers.",
+               color.bracket);
+  defineString(set, kColorspaceOut, "Output Colorspace",
+               "Colorspace or role of the output (empty: the input's; taatool --colorspace-out).",
+               color.colorspaceOut);
+}
+
+bool isColorParameter(const std::string& name) {
+  for (const char* color : {kOcioConfigSource, kOcioConfigFile, kColorspaceIn, kBracket,
+                            kColorspaceOut}) {
+    if (name == color) return true;
+  }
+  return false;
+}
+
+taa::ColorOptions colorOptions(const PluginSettings& s) {
+  taa::ColorOptions color;
+  switch (s.ocioConfigSource) {
+    case 0: color.ocioConfig.clear(); break;
+    case 1: color.ocioConfig = color::kOcioEnvironmentConfig; break;
+    case 2:
+      if (s.ocioConfigFile.empty()) {
+        throw std::runtime_error("OCIO Config is File, but OCIO Config File is empty");
+      }
+      color.ocioConfig = s.ocioConfigFile;
+      break;
+    default: throw std::runtime_error("OCIO Config choice out of range");
+  }
+  color.colorspaceIn = s.colorspaceIn;
+  color.bracket = s.bracket;
+  color.colorspaceOut = s.colorspaceOut;
+  return color;
+}
+
+void frameJitter(const PluginSettings& s, int frame, RenderScale scale, float jitter[2]) {
+  taa::JitterOptions options;
+  options.source = s.jitter == 1 ? taa::JitterSource::None : taa::JitterSource::Halton;
+  options.indexOffset = s.jitterOffset;
+  options.period = s.jitterPeriod;
+  const glm::vec2 offset = taa::frameJitter(frame, options);
+  jitter[0] = float(scale.x) * offset.x;
+  jitter[1] = float(scale.y) * offset.y;
 }
 
 PluginSettings readSettings(OfxImageEffectHandle effect, OfxTime time) {
@@ -174,24 +254,30 @@ PluginSettings readSettings(OfxImageEffectHandle effect, OfxTime time) {
   s.motionScale = getDouble(set, kMotionScale, time);
   s.depthNoHit = getDouble(set, kDepthNoHit, time);
   s.historyFrames = getInt(set, kHistoryFrames, time);
+  s.ocioConfigSource = getInt(set, kOcioConfigSource, time);
+  s.ocioConfigFile = getString(set, kOcioConfigFile, time);
+  s.colorspaceIn = getString(set, kColorspaceIn, time);
+  s.bracket = getString(set, kBracket, time);
+  s.colorspaceOut = getString(set, kColorspaceOut, time);
   return s;
 }
 
-void applySettings(taa_node* node, const PluginSettings& s, double renderScale) {
+void applySettings(taa_node* node, const PluginSettings& s, RenderScale scale) {
   require(node, taa_node_set_float(node, "blend", float(s.blend)));
   if (s.rectify < 0 || s.rectify > 3) throw std::runtime_error("rectify choice out of range");
   require(node, taa_node_set_string(node, "rectify", kRectifyNames[s.rectify]));
   require(node, taa_node_set_string(node, "motion-dilation", s.dilateMotion ? "box" : "centre"));
-  require(node, taa_node_set_string(node, "jitter", s.jitter == 1 ? "none" : "halton"));
-  require(node, taa_node_set_int(node, "jitter-offset", s.jitterOffset));
-  require(node, taa_node_set_int(node, "jitter-period", s.jitterPeriod));
   require(node, taa_node_set_string(node, "motion-y", s.motionY == 1 ? "up" : "down"));
   require(node, taa_node_set_string(node, "motion-to", s.motionTo == 1 ? "next" : "previous"));
-  // A render at scale s gets images s times the size of the render the vectors and the jitter
-  // were made for: both are in that render's pixels.
-  require(node, taa_node_set_float(node, "motion-scale", float(s.motionScale * renderScale)));
-  require(node, taa_node_set_float(node, "jitter-scale", float(renderScale)));
+  // A render at scale s gets images s times the size of the render the vectors were made for:
+  // they are in that render's pixels.
+  require(node, taa_node_set_float(node, "motion-scale", float(s.motionScale * scale.x)));
   require(node, taa_node_set_float(node, "depth-nohit", float(s.depthNoHit)));
+  const taa::ColorOptions color = colorOptions(s);
+  require(node, taa_node_set_string(node, "ocio-config", color.ocioConfig.c_str()));
+  require(node, taa_node_set_string(node, "colorspace-in", color.colorspaceIn.c_str()));
+  require(node, taa_node_set_string(node, "bracket", color.bracket.c_str()));
+  require(node, taa_node_set_string(node, "colorspace-out", color.colorspaceOut.c_str()));
 }
 
 }  // namespace taa::ofx

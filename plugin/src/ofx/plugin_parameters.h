@@ -2,6 +2,8 @@
 // mapping onto a C ABI node. Parameters do not animate: the whole history uses one setting.
 #pragma once
 
+#include <string>
+
 #include "ofx/ofx_abi.h"
 #include "taa/options.h"
 #include "taa/taa.h"
@@ -20,19 +22,45 @@ struct PluginSettings {
   double motionScale = 1.0;   // --motion-scale, at render scale 1
   double depthNoHit = 1e9;    // --depth-nohit
   int historyFrames = 0;      // 0: history from the clip's first frame; N: the last N frames
+  // The tonemap bracket (--ocio-config, --colorspace-in, --bracket, --colorspace-out). The
+  // config is taa's shipped one unless the user picks $OCIO or a file: hosts set $OCIO to the
+  // studio's config, which has none of taa's bracket names.
+  int ocioConfigSource = 0;   // 0 shipped, 1 $OCIO, 2 the file ocioConfigFile
+  std::string ocioConfigFile;
+  std::string colorspaceIn = taa::ColorOptions{}.colorspaceIn;
+  std::string bracket = taa::ColorOptions{}.bracket;
+  std::string colorspaceOut = taa::ColorOptions{}.colorspaceOut;
 
   bool operator==(const PluginSettings& other) const;
   bool operator!=(const PluginSettings& other) const { return !(*this == other); }
 };
 
+// The host's render scale: image pixels per full-resolution pixel, in x and in y.
+struct RenderScale {
+  double x = 1.0, y = 1.0;
+  bool operator==(const RenderScale& o) const { return x == o.x && y == o.y; }
+};
+
 // Defines every parameter on the descriptor's parameter set (describe in context).
 void defineParameters(OfxParamSetHandle parameters);
+
+// Whether the parameter `name` is one of the tonemap bracket's.
+bool isColorParameter(const std::string& name);
+
+// The ColorOptions (taatool's --ocio-config and friends) these settings ask for. Throws
+// std::runtime_error when a config file is asked for but none is named.
+taa::ColorOptions colorOptions(const PluginSettings& settings);
+
+// The jitter of `frame` in image pixels: the library's Halton offsets (taatool's, for the
+// same Jitter, Offset and Period) times the render scale, per axis.
+void frameJitter(const PluginSettings& settings, int frame, RenderScale scale, float jitter[2]);
 
 // Reads the instance's parameter values at `time`. Throws std::runtime_error on host errors.
 PluginSettings readSettings(OfxImageEffectHandle effect, OfxTime time);
 
-// Sets `settings` on `node`; pixel-unit motion is multiplied by `renderScale` (the host's
-// render scale in x; taa assumes square scaling). Throws with the node's message on failure.
-void applySettings(taa_node* node, const PluginSettings& settings, double renderScale);
+// Sets `settings` on `node`; pixel-unit motion is multiplied by the render scale in x (the
+// caller scales y values by scale.y / scale.x where the two differ). Jitter is not the node's:
+// every frame carries it (frameJitter). Throws with the node's message on failure.
+void applySettings(taa_node* node, const PluginSettings& settings, RenderScale scale);
 
 }  // namespace taa::ofx

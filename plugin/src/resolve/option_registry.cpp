@@ -300,7 +300,8 @@ std::vector<Entry> makeEntries() {
                                   "range"},
                                  0.0f, kNoLimit, &ResolveOptions::sharpen));
   entries.push_back(textOption({"ocio-config", "Tonemap bracket", "", "",
-                                "OCIO config (empty: $OCIO, else taa's shipped config)"},
+                                "OCIO config file; empty: taa's shipped config; $OCIO: the one $OCIO names "
+                                "(taatool's default when $OCIO is set)"},
                                &ColorOptions::ocioConfig));
   entries.push_back(textOption({"colorspace-in", "Tonemap bracket", "", "",
                                 "colorspace or role of the input colour"},
