@@ -24,3 +24,11 @@ vec2 rasterOf(mat4 cameraToRaster, vec4 point) {
   vec4 raster = cameraToRaster * point;
   return raster.xy / raster.w;
 }
+
+// The homogeneous position, in another frame's raster (or camera space), of the point seen at
+// raster `position` at planar depth `depth`, through the matrices of resolve/camera's
+// frameCarry(): about half the work of cameraPointOf() and rasterOf() together.
+vec4 carried(mat4 alongDepth, mat4 offset, vec2 position, float depth) {
+  vec4 along = alongDepth * vec4(position, 1.0, 0.0);
+  return isinf(depth) ? along : depth * along + offset * vec4(position, 1.0, 1.0);
+}

@@ -9,9 +9,11 @@
 // source frame s the pixel asks where its surface was in s and looks at the 2x2 samples around
 // that point, then carries each of them to t along the sample's own path:
 // - static samples (window_classify.frag: the ring's depth is signed, + static, - moving) by
-//   exact camera reprojection from their own depth.
-//   A pixel straddling a wire and the backdrop has two surfaces: it asks for both, its nearest
-//   and its farthest depth, so the backdrop's samples are found beside the wire's;
+//   exact camera reprojection from their own depth. A pixel straddling a wire and the backdrop
+//   has two surfaces: it asks for both, near and far, so the backdrop's samples are found
+//   beside the wire's. A wire t's own samples missed altogether shows up as a carried sample
+//   nearer than all of t's (at first from the nearest frames, whose parallax is small); its
+//   depth is then asked for in the farther frames too;
 // - moving samples along the pixel's motion vectors, chained frame to frame (backward through
 //   each frame's vectors; forward by inverting the next frame's), the sample's offset from the
 //   chained point kept as its offset from the pixel.
@@ -33,19 +35,22 @@ uniform sampler2DArray uMotion;  // px, y down, to the previous frame
 uniform int uTargetLayer;
 uniform vec2 uTargetJitter;
 uniform bool uTargetHasCamera;
-uniform mat4 uTargetRasterToCamera;
 uniform float uReconstruction[9];  // t's 3x3 unjitter weights (resolve/reconstruction_filter)
 
-// Source frames ordered by distance: t-1, t+1, t-2, t+2, ... (the chains walk outward).
+// Source frames ordered by distance: t-1, t+1, t-2, t+2, ... (the chains walk outward). The
+// matrices carry raster positions at a planar depth (resolve/camera: frameCarry): source to
+// target raster and target camera (row z: the depth there), and target to source raster.
 uniform int uSourceCount;
 uniform int uSourceLayer[MAX_SOURCES];
 uniform int uSourceOffset[MAX_SOURCES];  // s - t
 uniform vec2 uSourceJitter[MAX_SOURCES];
 uniform int uSourceHasCamera[MAX_SOURCES];  // s and t both have cameras
-uniform mat4 uSourceRasterToCamera[MAX_SOURCES];
-uniform mat4 uSourceCameraToTargetRaster[MAX_SOURCES];
-uniform vec4 uSourceCameraToTargetDepth[MAX_SOURCES];  // row z of s camera -> t camera
-uniform mat4 uTargetCameraToSourceRaster[MAX_SOURCES];
+uniform mat4 uToTargetAlong[MAX_SOURCES];
+uniform mat4 uToTargetOffset[MAX_SOURCES];
+uniform vec4 uToTargetDepthAlong[MAX_SOURCES];
+uniform vec4 uToTargetDepthOffset[MAX_SOURCES];
+uniform mat4 uFromTargetAlong[MAX_SOURCES];
+uniform mat4 uFromTargetOffset[MAX_SOURCES];
 
 uniform float uSigma;
 uniform float uFalloff;
@@ -57,85 +62,108 @@ layout(location = 0) out vec4 outColor;  // output colour space
 layout(location = 1) out vec4 outDebug;  // weight gathered, rejected fraction, candidates, 0
 
 ivec2 gSize;
+vec2 gPosition;
 vec3 gBoxMin, gBoxMax;
 float gNearest, gFarthest;
+float gThinDepth;  // a surface nearer than all of t's samples that carried samples revealed
 vec4 gSum;
 float gWeight;
 float gCandidates, gRejected;
 
 bool onScreen(ivec2 n) { return all(greaterThanEqual(n, ivec2(0))) && all(lessThan(n, gSize)); }
 
-void addSample(vec4 colour, float weight) {
-  gSum += weight * colour;
-  gWeight += weight;
-}
-
-// A static sample of source k at texel n, carried to t by the cameras.
-void addStaticSample(int k, int layer, ivec2 n, vec2 position) {
-  float depth = texelFetch(uDepth, ivec3(n, layer), 0).r;
-  if (depth < 0.0) return;  // moving: the chains take it
-  vec2 samplePosition = vec2(n) + 0.5 + uSourceJitter[k];
-  vec4 point = cameraPointOf(uSourceRasterToCamera[k], samplePosition, depth);
-  float weight = spatialWeight(rasterOf(uSourceCameraToTargetRaster[k], point) - position,
-                               uSigma);
-  if (weight < 1e-3) return;
-  gCandidates += 1.0;
-  float carriedDepth = isinf(depth) ? depth : dot(uSourceCameraToTargetDepth[k], point);
-  if (hiddenBehind(carriedDepth, gFarthest, uDepthTolerance)) {
-    gRejected += 1.0;
-    return;
-  }
-  vec4 colour = texelFetch(uColour, ivec3(n, layer), 0);
-  float agreement = nearerThanAll(carriedDepth, gNearest, uDepthTolerance)
-                        ? 1.0
-                        : colourWeight(rgbToYCoCg(colour.rgb), gBoxMin, gBoxMax, uColourTolerance);
-  if (agreement <= 0.0) {
-    gRejected += 1.0;
-    return;
-  }
-  addSample(colour, weight * agreement * temporalWeight(uSourceOffset[k], uFalloff));
-}
-
-// A moving sample of source k at texel n near the chained point `chained`.
-void addMovingSample(int k, int layer, ivec2 n, vec2 chained) {
-  if (texelFetch(uDepth, ivec3(n, layer), 0).r >= 0.0) return;  // static: the cameras take it
-  float weight = spatialWeight(vec2(n) + 0.5 + uSourceJitter[k] - chained, uSigma);
-  if (weight < 1e-3) return;
-  gCandidates += 1.0;
-  vec4 colour = texelFetch(uColour, ivec3(n, layer), 0);
-  float agreement = colourWeight(rgbToYCoCg(colour.rgb), gBoxMin, gBoxMax, uColourTolerance);
-  if (agreement <= 0.0) {
-    gRejected += 1.0;
-    return;
-  }
-  addSample(colour, weight * agreement * temporalWeight(uSourceOffset[k], uFalloff));
+// The signed depths of the 2x2 texels corner, corner + (1, 0), + (0, 1), + (1, 1), in that
+// order, from one gather (edge texels repeat; callers skip texels off screen).
+vec4 depthBlock(ivec2 corner, int layer) {
+  vec4 g = textureGather(uDepth, vec3((vec2(corner) + 1.0) / vec2(gSize), float(layer)));
+  return vec4(g.w, g.z, g.x, g.y);
 }
 
 // The texel whose sample (at texel + 0.5 + jitter) is the lower-left of the four around `p`.
 ivec2 cornerTexel(vec2 p, vec2 jitter) { return ivec2(floor(p - 0.5 - jitter)); }
 
-// Where, in source k, the samples that land on `position` sit, for the surface at `point` (a
-// camera-space point of the target seen at `position` at depth `depth`). The depth is the 3x3's
-// nearest or farthest, not the centre's, so on a slanted surface the first guess is off by the
-// depth's slope times the parallax; one step corrects it: the sample nearest the guess, if it
-// is on that surface, is carried to the target, and the guess moves by how far it missed.
-vec2 sourcePosition(int k, int layer, vec4 point, float depth, vec2 position) {
-  vec2 guess = rasterOf(uTargetCameraToSourceRaster[k], point);
-  ivec2 n = ivec2(floor(guess - uSourceJitter[k]));
-  if (!onScreen(n)) return guess;
-  float found = texelFetch(uDepth, ivec3(n, layer), 0).r;
-  bool sameSurface = isinf(depth) ? isinf(found)
-                                  : found > 0.0 && abs(found - depth) <= 0.1 * depth;
-  if (!sameSurface || isinf(found)) return guess;
-  vec2 samplePosition = vec2(n) + 0.5 + uSourceJitter[k];
-  vec2 landing = rasterOf(uSourceCameraToTargetRaster[k],
-                          cameraPointOf(uSourceRasterToCamera[k], samplePosition, found));
-  return samplePosition + (position - landing);
+void addSample(vec4 colour, float weight) {
+  gSum += weight * colour;
+  gWeight += weight;
+}
+
+bool inBlock(ivec2 n, ivec2 corner) {
+  return all(greaterThanEqual(n, corner)) && all(lessThanEqual(n, corner + 1));
+}
+
+// The static samples of source k in the 2x2 block at `corner` (skipping the first `skips` of
+// the blocks already taken), carried to t by the cameras.
+void addStaticBlock(int k, ivec2 corner, int skips, ivec2 skip0, ivec2 skip1,
+                    float frameWeight) {
+  int layer = uSourceLayer[k];
+  vec4 depths = depthBlock(corner, layer);
+  vec2 first = vec2(corner) + 0.5 + uSourceJitter[k];
+  // Carried positions are affine in the sample position: one product per block, columns after.
+  vec4 along = uToTargetAlong[k] * vec4(first, 1.0, 0.0);
+  vec4 offset = uToTargetOffset[k] * vec4(first, 1.0, 1.0);
+  float depthAlong = dot(uToTargetDepthAlong[k], vec4(first, 1.0, 0.0));
+  float depthOffset = dot(uToTargetDepthOffset[k], vec4(first, 1.0, 1.0));
+  for (int i = 0; i < 4; ++i) {
+    ivec2 step = ivec2(i & 1, i >> 1);
+    ivec2 n = corner + step;
+    float depth = depths[i];
+    if (depth < 0.0 || !onScreen(n)) continue;  // moving samples are the chains'
+    if ((skips > 0 && inBlock(n, skip0)) || (skips > 1 && inBlock(n, skip1))) continue;
+    vec2 s = vec2(step);
+    vec4 a = along + s.x * uToTargetAlong[k][0] + s.y * uToTargetAlong[k][1];
+    vec4 h = isinf(depth) ? a : depth * a + offset + s.x * uToTargetOffset[k][0] +
+                                    s.y * uToTargetOffset[k][1];
+    float weight = spatialWeight(h.xy / h.w - gPosition, uSigma);
+    if (weight < 1e-3) continue;
+    gCandidates += 1.0;
+    float carriedDepth = depth;
+    if (!isinf(depth)) {
+      carriedDepth = depth * (depthAlong + dot(s, uToTargetDepthAlong[k].xy)) + depthOffset +
+                     dot(s, uToTargetDepthOffset[k].xy);
+    }
+    if (hiddenBehind(carriedDepth, gFarthest, uDepthTolerance)) {
+      gRejected += 1.0;
+      continue;
+    }
+    vec4 colour = texelFetch(uColour, ivec3(n, layer), 0);
+    bool thin = nearerThanAll(carriedDepth, gNearest, uDepthTolerance);
+    // A thin feature t's own samples missed: farther sources find theirs at its depth.
+    if (thin && weight > 0.01) gThinDepth = min(gThinDepth, carriedDepth);
+    float agreement =
+        thin ? 1.0
+             : colourWeight(rgbToYCoCg(colour.rgb), gBoxMin, gBoxMax, uColourTolerance);
+    if (agreement <= 0.0) {
+      gRejected += 1.0;
+      continue;
+    }
+    addSample(colour, weight * agreement * frameWeight);
+  }
+}
+
+// The moving samples of source k in the 2x2 block around the chained point.
+void addMovingBlock(int k, vec2 chained, float frameWeight) {
+  int layer = uSourceLayer[k];
+  ivec2 corner = cornerTexel(chained, uSourceJitter[k]);
+  vec4 depths = depthBlock(corner, layer);
+  for (int i = 0; i < 4; ++i) {
+    ivec2 n = corner + ivec2(i & 1, i >> 1);
+    if (depths[i] >= 0.0 || !onScreen(n)) continue;  // static samples are the cameras'
+    float weight = spatialWeight(vec2(n) + 0.5 + uSourceJitter[k] - chained, uSigma);
+    if (weight < 1e-3) continue;
+    gCandidates += 1.0;
+    vec4 colour = texelFetch(uColour, ivec3(n, layer), 0);
+    float agreement = colourWeight(rgbToYCoCg(colour.rgb), gBoxMin, gBoxMax, uColourTolerance);
+    if (agreement <= 0.0) {
+      gRejected += 1.0;
+      continue;
+    }
+    addSample(colour, weight * agreement * frameWeight);
+  }
 }
 
 void main() {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
-  vec2 position = gl_FragCoord.xy;
+  gPosition = gl_FragCoord.xy;
   gSize = textureSize(uColour, 0).xy;
   gSum = vec4(0.0);
   gWeight = 0.0;
@@ -148,6 +176,8 @@ void main() {
   gBoxMax = vec3(-1e30);
   gNearest = 1.0 / 0.0;
   gFarthest = 0.0;
+  gThinDepth = 1.0 / 0.0;
+  float depths[9];
   float movingDepth = 1.0 / 0.0;
   vec2 startMotion = vec2(0.0);
   bool anyMoving = false;
@@ -162,6 +192,7 @@ void main() {
       gBoxMax = max(gBoxMax, c);
       float signedDepth = texelFetch(uDepth, ivec3(n, uTargetLayer), 0).r;
       float depth = abs(signedDepth);
+      depths[3 * (dy + 1) + dx + 1] = depth;
       gNearest = min(gNearest, depth);
       gFarthest = max(gFarthest, depth);
       if (signedDepth < 0.0 && depth <= movingDepth) {
@@ -170,44 +201,60 @@ void main() {
         anyMoving = true;
       }
       if (wanted == n) {  // border texels repeat: count each sample once
-        addSample(colour, spatialWeight(vec2(n) + 0.5 + uTargetJitter - position, uSigma));
+        addSample(colour, spatialWeight(vec2(n) + 0.5 + uTargetJitter - gPosition, uSigma));
       }
     }
   }
   addSample(filtered, uReconstructionWeight);
 
-  // The surfaces the pixel may be looking at, as camera-space points: its nearest and, when
-  // the 3x3 spans two depths, its farthest.
-  bool twoSurfaces = !isinf(gNearest) && gFarthest > gNearest * (1.0 + max(uDepthTolerance, 0.01));
-  vec4 nearPoint = cameraPointOf(uTargetRasterToCamera, position, gNearest);
-  vec4 farPoint = cameraPointOf(uTargetRasterToCamera, position, gFarthest);
+  // The surfaces the pixel may be looking at: the 3x3's near one and, when it spans two
+  // depths, its far one. Each surface's depth is the mean of its samples', which on a slanted
+  // surface is the depth at the pixel centre; its nearest or farthest would miss the samples
+  // that land here by the slope times the parallax.
+  float split = max(uDepthTolerance, 0.01);
+  bool twoSurfaces = !isinf(gNearest) && gFarthest > gNearest * (1.0 + split);
+  float nearSum = 0.0, nearCount = 0.0, farSum = 0.0, farCount = 0.0;
+  for (int i = 0; i < 9; ++i) {
+    if (depths[i] <= gNearest * (1.0 + split)) {
+      nearSum += depths[i];
+      nearCount += 1.0;
+    } else if (!isinf(depths[i]) && depths[i] >= gFarthest / (1.0 + split)) {
+      farSum += depths[i];
+      farCount += 1.0;
+    }
+  }
+  float nearDepth = isinf(gNearest) ? gNearest : nearSum / nearCount;
+  float farDepth = farCount > 0.0 ? farSum / farCount : gFarthest;
 
   // Chains of the pixel's moving surface: where it is in the frame behind (t-1, t-2, ...) and
   // ahead (t+1, ...) of the one processed last.
-  vec2 behind = position + startMotion;  // in t-1
-  vec2 aheadPrevious = position;         // in t (the chain ahead inverts each next frame)
-  vec2 velocity = -startMotion;          // first guess of each step ahead
+  vec2 behind = gPosition + startMotion;  // in t-1
+  vec2 aheadPrevious = gPosition;         // in t (the chain ahead inverts each next frame)
+  vec2 velocity = -startMotion;           // first guess of each step ahead
   bool behindAlive = anyMoving;
   bool aheadAlive = anyMoving;
 
   for (int k = 0; k < uSourceCount; ++k) {
     int layer = uSourceLayer[k];
     vec2 jitter = uSourceJitter[k];
+    float frameWeight = temporalWeight(uSourceOffset[k], uFalloff);
     if (uSourceHasCamera[k] != 0 && uTargetHasCamera) {
-      ivec2 first = cornerTexel(sourcePosition(k, layer, nearPoint, gNearest, position), jitter);
-      for (int i = 0; i < 4; ++i) {
-        ivec2 n = first + ivec2(i & 1, i >> 1);
-        if (onScreen(n)) addStaticSample(k, layer, n, position);
+      vec4 nearSource = carried(uFromTargetAlong[k], uFromTargetOffset[k], gPosition, nearDepth);
+      ivec2 first = cornerTexel(nearSource.xy / nearSource.w, jitter);
+      ivec2 second = first;
+      int blocks = 1;
+      if (gThinDepth < nearDepth * (1.0 - split)) {
+        vec4 thinSource =
+            carried(uFromTargetAlong[k], uFromTargetOffset[k], gPosition, gThinDepth);
+        second = cornerTexel(thinSource.xy / thinSource.w, jitter);
+        blocks = 2;
       }
+      addStaticBlock(k, first, 0, first, first, frameWeight);
+      if (blocks == 2) addStaticBlock(k, second, 1, first, first, frameWeight);
       if (twoSurfaces) {
-        ivec2 second =
-            cornerTexel(sourcePosition(k, layer, farPoint, gFarthest, position), jitter);
-        for (int i = 0; i < 4; ++i) {
-          ivec2 n = second + ivec2(i & 1, i >> 1);
-          // Samples already taken for the nearer surface are not counted twice.
-          bool taken = all(greaterThanEqual(n, first)) && all(lessThanEqual(n, first + 1));
-          if (!taken && onScreen(n)) addStaticSample(k, layer, n, position);
-        }
+        vec4 farSource = carried(uFromTargetAlong[k], uFromTargetOffset[k], gPosition, farDepth);
+        addStaticBlock(k, cornerTexel(farSource.xy / farSource.w, jitter), blocks, first,
+                       second, frameWeight);
       }
     }
 
@@ -233,11 +280,7 @@ void main() {
       if (behindStep) behindAlive = false; else aheadAlive = false;
       continue;
     }
-    ivec2 corner = cornerTexel(chained, jitter);
-    for (int i = 0; i < 4; ++i) {
-      ivec2 n = corner + ivec2(i & 1, i >> 1);
-      if (onScreen(n)) addMovingSample(k, layer, n, chained);
-    }
+    addMovingBlock(k, chained, frameWeight);
     if (behindStep) {
       behind = chained + texelFetch(uMotion, ivec3(at, layer), 0).xy;
     } else {

@@ -37,6 +37,52 @@ ReprojectionMatrices reprojectionMatrices(const FrameCamera& current, const Fram
   return m;
 }
 
+namespace {
+
+// The camera-space point `rasterToCamera` sees at raster (x, y) at planar depth `depth`.
+glm::dvec3 cameraPointAt(const glm::dmat4& rasterToCamera, glm::dvec2 position, double depth) {
+  const glm::dvec4 a = rasterToCamera * glm::dvec4(position, 0.25, 1.0);
+  const glm::dvec4 b = rasterToCamera * glm::dvec4(position, 0.75, 1.0);
+  const glm::dvec3 nearPoint = glm::dvec3(a) / a.w, farPoint = glm::dvec3(b) / b.w;
+  const glm::dvec3 along = farPoint - nearPoint;
+  return nearPoint + along * ((depth - nearPoint.z) / along.z);
+}
+
+}  // namespace
+
+FrameCarry frameCarry(const FrameCamera& from, const FrameCamera& to, const RasterWindow& window,
+                      NdcConvention convention) {
+  const glm::dmat4 ndcFromRasterM = ndcFromRaster(window, convention);
+  const glm::dmat4 cameraToWorld = glm::inverse(from.worldToCamera);
+  const glm::dmat4 rasterToCamera =
+      glm::inverse(from.worldToNdc * cameraToWorld) * ndcFromRasterM;
+  // P(x, y, d) = d A (x, y, 1) + G (x, y, 1): from the points at depths 1 and 2 of three raster
+  // positions (exact, P being affine in x, y and in d for projective cameras).
+  glm::dmat4 a(0.0), g(0.0);  // upper-left 3x3 used; g[3][3] = 1 carries the homogeneous 1
+  const glm::dvec2 corners[3] = {{0.0, 0.0}, {1.0, 0.0}, {0.0, 1.0}};
+  glm::dvec3 along[3], offset[3];
+  for (int i = 0; i < 3; ++i) {
+    const glm::dvec3 one = cameraPointAt(rasterToCamera, corners[i], 1.0);
+    const glm::dvec3 two = cameraPointAt(rasterToCamera, corners[i], 2.0);
+    along[i] = two - one;
+    offset[i] = one - along[i];
+  }
+  // Columns: d(x), d(y), constant.
+  a[0] = glm::dvec4(along[1] - along[0], 0.0);
+  a[1] = glm::dvec4(along[2] - along[0], 0.0);
+  a[2] = glm::dvec4(along[0], 0.0);
+  g[0] = glm::dvec4(offset[1] - offset[0], 0.0);
+  g[1] = glm::dvec4(offset[2] - offset[0], 0.0);
+  g[2] = glm::dvec4(offset[0], 0.0);
+  g[3] = glm::dvec4(0.0, 0.0, 0.0, 1.0);
+  const glm::dmat4 toRaster = glm::inverse(ndcFromRasterM) * to.worldToNdc * cameraToWorld;
+  const glm::dmat4 toCamera = to.worldToCamera * cameraToWorld;
+  FrameCarry carry;
+  carry.toRaster = {glm::mat4(toRaster * a), glm::mat4(toRaster * g)};
+  carry.toCamera = {glm::mat4(toCamera * a), glm::mat4(toCamera * g)};
+  return carry;
+}
+
 glm::dvec2 cameraMotion(const FrameCamera& current, const FrameCamera& previous,
                         const RasterWindow& window, NdcConvention convention, glm::dvec2 position,
                         double depth) {

@@ -36,6 +36,26 @@ glm::dmat4 ndcFromRaster(const RasterWindow& window, NdcConvention convention);
 ReprojectionMatrices reprojectionMatrices(const FrameCamera& current, const FrameCamera& previous,
                                           const RasterWindow& window, NdcConvention convention);
 
+// A frame's raster positions carried to another frame's raster (or camera) as matrices cheap to
+// apply per sample: the camera-space point a raster position (x, y) sees at planar depth d is
+// d A (x, y, 1) + G (x, y, 1) for pinhole (G = 0) and orthographic cameras alike, so the
+// other frame's homogeneous position is d alongDepth (x, y, 1, 0) + offset (x, y, 1, 1), and
+// at infinite depth (a direction) alongDepth (x, y, 1, 0) alone. glsl/camera_geometry.glsl's
+// carried() applies it.
+struct CarryMatrices {
+  glm::mat4 alongDepth{0.0f};
+  glm::mat4 offset{0.0f};
+};
+
+// From raster positions of `from` (at their planar depth) to raster positions of `to`
+// (x, y, ndc z, w), and to `to`'s camera space (toCamera: row z gives the planar depth there).
+struct FrameCarry {
+  CarryMatrices toRaster;
+  CarryMatrices toCamera;
+};
+FrameCarry frameCarry(const FrameCamera& from, const FrameCamera& to, const RasterWindow& window,
+                      NdcConvention convention);
+
 // The motion (pixels, y down, to the previous frame) of a static surface seen at raster
 // position (x, y) at planar depth `depth`: the CPU twin of cameraMotion() in the shader.
 glm::dvec2 cameraMotion(const FrameCamera& current, const FrameCamera& previous,

@@ -295,11 +295,13 @@ struct WindowResolver::Impl {
     p.set("uTargetHasCamera", useCameras ? 1 : 0);
 
     std::vector<int> layers, offsets, hasCamera;
-    std::vector<float> jitters, rasterToCamera, cameraToTargetRaster, cameraToTargetDepth,
-        targetCameraToSourceRaster;
-    glm::mat4 targetRasterToCamera(1.0f);
+    std::vector<float> jitters, toTargetAlong, toTargetOffset, toTargetDepthAlong,
+        toTargetDepthOffset, fromTargetAlong, fromTargetOffset;
     auto appendMatrix = [](std::vector<float>& to, const glm::mat4& m) {
       to.insert(to.end(), &m[0][0], &m[0][0] + 16);
+    };
+    auto appendRowZ = [](std::vector<float>& to, const glm::mat4& m) {
+      for (int column = 0; column < 4; ++column) to.push_back(m[column][2]);
     };
     // Nearest first, behind before ahead: the shader's chains walk outward in this order, and
     // the sum's order is fixed by the window alone (never by what else the ring holds).
@@ -318,33 +320,32 @@ struct WindowResolver::Impl {
         jitters.push_back(s.jitter.y);
         const bool cameras = useCameras && s.camera;
         hasCamera.push_back(cameras ? 1 : 0);
-        ReprojectionMatrices toTarget, fromTarget;
+        FrameCarry toTarget, fromTarget;
         if (cameras) {
-          toTarget = reprojectionMatrices(*s.camera, *target.camera, s.window, s.ndc);
-          fromTarget = reprojectionMatrices(*target.camera, *s.camera, target.window, target.ndc);
-          targetRasterToCamera = fromTarget.rasterToCamera;
+          toTarget = frameCarry(*s.camera, *target.camera, s.window, s.ndc);
+          fromTarget = frameCarry(*target.camera, *s.camera, target.window, target.ndc);
         }
-        appendMatrix(rasterToCamera, toTarget.rasterToCamera);
-        appendMatrix(cameraToTargetRaster, toTarget.cameraToPreviousRaster);
-        const glm::mat4& toTargetCamera = toTarget.cameraToPreviousCamera;
-        for (int column = 0; column < 4; ++column) {
-          cameraToTargetDepth.push_back(toTargetCamera[column][2]);  // row z
-        }
-        appendMatrix(targetCameraToSourceRaster, fromTarget.cameraToPreviousRaster);
+        appendMatrix(toTargetAlong, toTarget.toRaster.alongDepth);
+        appendMatrix(toTargetOffset, toTarget.toRaster.offset);
+        appendRowZ(toTargetDepthAlong, toTarget.toCamera.alongDepth);
+        appendRowZ(toTargetDepthOffset, toTarget.toCamera.offset);
+        appendMatrix(fromTargetAlong, fromTarget.toRaster.alongDepth);
+        appendMatrix(fromTargetOffset, fromTarget.toRaster.offset);
       }
     }
     const int count = int(layers.size());
     p.set("uSourceCount", count);
-    p.setMatrix4("uTargetRasterToCamera", &targetRasterToCamera[0][0]);
     if (count == 0) return;
     p.setIntArray("uSourceLayer", layers.data(), count);
     p.setIntArray("uSourceOffset", offsets.data(), count);
     p.setVec2Array("uSourceJitter", jitters.data(), count);
     p.setIntArray("uSourceHasCamera", hasCamera.data(), count);
-    p.setMatrix4Array("uSourceRasterToCamera", rasterToCamera.data(), count);
-    p.setMatrix4Array("uSourceCameraToTargetRaster", cameraToTargetRaster.data(), count);
-    p.setMatrix4Array("uTargetCameraToSourceRaster", targetCameraToSourceRaster.data(), count);
-    p.setVec4Array("uSourceCameraToTargetDepth", cameraToTargetDepth.data(), count);
+    p.setMatrix4Array("uToTargetAlong", toTargetAlong.data(), count);
+    p.setMatrix4Array("uToTargetOffset", toTargetOffset.data(), count);
+    p.setVec4Array("uToTargetDepthAlong", toTargetDepthAlong.data(), count);
+    p.setVec4Array("uToTargetDepthOffset", toTargetDepthOffset.data(), count);
+    p.setMatrix4Array("uFromTargetAlong", fromTargetAlong.data(), count);
+    p.setMatrix4Array("uFromTargetOffset", fromTargetOffset.data(), count);
   }
 
   TypedImage resolve(int frame, int first, int last, SampleType outputType) {
