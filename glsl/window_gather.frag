@@ -32,7 +32,8 @@ uniform sampler2DArray uColour;  // RGBA, working space: each frame's jittered s
 uniform sampler2DArray uDepth;   // signed planar depth: + static, - moving; +inf = no hit
 uniform sampler2DArray uMotion;  // px, y down, to the previous frame
 
-uniform int uTargetLayer;
+uniform int uTargetLayer;       // colour and motion
+uniform int uTargetDepthLayer;  // signed depth
 uniform vec2 uTargetJitter;
 uniform bool uTargetHasCamera;
 uniform float uReconstruction[9];  // t's 3x3 unjitter weights (resolve/reconstruction_filter)
@@ -41,7 +42,8 @@ uniform float uReconstruction[9];  // t's 3x3 unjitter weights (resolve/reconstr
 // matrices carry raster positions at a planar depth (resolve/camera: frameCarry): source to
 // target raster and target camera (row z: the depth there), and target to source raster.
 uniform int uSourceCount;
-uniform int uSourceLayer[MAX_SOURCES];
+uniform int uSourceLayer[MAX_SOURCES];       // colour and motion
+uniform int uSourceDepthLayer[MAX_SOURCES];  // signed depth
 uniform int uSourceOffset[MAX_SOURCES];  // s - t
 uniform vec2 uSourceJitter[MAX_SOURCES];
 uniform int uSourceHasCamera[MAX_SOURCES];  // s and t both have cameras
@@ -96,7 +98,7 @@ bool inBlock(ivec2 n, ivec2 corner) {
 void addStaticBlock(int k, ivec2 corner, int skips, ivec2 skip0, ivec2 skip1,
                     float frameWeight) {
   int layer = uSourceLayer[k];
-  vec4 depths = depthBlock(corner, layer);
+  vec4 depths = depthBlock(corner, uSourceDepthLayer[k]);
   vec2 first = vec2(corner) + 0.5 + uSourceJitter[k];
   // Carried positions are affine in the sample position: one product per block, columns after.
   vec4 along = uToTargetAlong[k] * vec4(first, 1.0, 0.0);
@@ -144,7 +146,7 @@ void addStaticBlock(int k, ivec2 corner, int skips, ivec2 skip0, ivec2 skip1,
 void addMovingBlock(int k, vec2 chained, float frameWeight) {
   int layer = uSourceLayer[k];
   ivec2 corner = cornerTexel(chained, uSourceJitter[k]);
-  vec4 depths = depthBlock(corner, layer);
+  vec4 depths = depthBlock(corner, uSourceDepthLayer[k]);
   for (int i = 0; i < 4; ++i) {
     ivec2 n = corner + ivec2(i & 1, i >> 1);
     if (depths[i] >= 0.0 || !onScreen(n)) continue;  // static samples are the cameras'
@@ -190,7 +192,7 @@ void main() {
       vec3 c = rgbToYCoCg(colour.rgb);
       gBoxMin = min(gBoxMin, c);
       gBoxMax = max(gBoxMax, c);
-      float signedDepth = texelFetch(uDepth, ivec3(n, uTargetLayer), 0).r;
+      float signedDepth = texelFetch(uDepth, ivec3(n, uTargetDepthLayer), 0).r;
       float depth = abs(signedDepth);
       depths[3 * (dy + 1) + dx + 1] = depth;
       gNearest = min(gNearest, depth);
@@ -276,7 +278,7 @@ void main() {
     ivec2 at = ivec2(floor(chained));
     // The chain ends off screen, or where the frame sees something static: the moving surface
     // is not there (hidden, or gone).
-    if (!onScreen(at) || texelFetch(uDepth, ivec3(at, layer), 0).r >= 0.0) {
+    if (!onScreen(at) || texelFetch(uDepth, ivec3(at, uSourceDepthLayer[k]), 0).r >= 0.0) {
       if (behindStep) behindAlive = false; else aheadAlive = false;
       continue;
     }

@@ -125,8 +125,7 @@ class WindowTest : public ::testing::Test {
     return resolveWith(resolver, scene, frame, options.window.radius);
   }
 
-  Image resolveWith(WindowResolver& resolver, const Scene& scene, int frame, int radius,
-                    std::optional<int> shotStart = std::nullopt) {
+  Image resolveWith(WindowResolver& resolver, const Scene& scene, int frame, int radius) {
     const int first = frame - radius, last = frame + radius;
     for (int f = first; f <= last; ++f) {
       if (resolver.hasFrame(f)) continue;
@@ -139,9 +138,7 @@ class WindowTest : public ::testing::Test {
       input.camera = scene.withCameras ? &data.camera : nullptr;
       input.window = {0, 0, kWidth, kHeight};
       input.ndc = NdcConvention::ZeroOneYDown;
-      const FrameCamera previous = cameraAt(scene.cameraX(f - 1));
-      const bool startsShot = shotStart ? f == *shotStart : f == first;
-      resolver.addFrame(f, input, scene.withCameras && !startsShot ? &previous : nullptr);
+      resolver.addFrame(f, input);
     }
     return std::move(*resolver.resolve(frame, first, last, SampleType::Float).floats());
   }
@@ -292,11 +289,11 @@ TEST_F(WindowTest, AFrameDependsOnItsWindowAlone) {
   Image fromRunning;
   for (int frame = 4; frame <= 12; ++frame) {
     for (int f = frame - 8; f < frame - 3; ++f) running.dropFrame(f);
-    const Image out = resolveWith(running, scene, frame, 3, 1);
+    const Image out = resolveWith(running, scene, frame, 3);
     if (frame == 9) fromRunning = out;
   }
   WindowResolver fresh(*context_, options);
-  const Image alone = resolveWith(fresh, scene, 9, 3, 1);
+  const Image alone = resolveWith(fresh, scene, 9, 3);
   ASSERT_EQ(alone.pixels.size(), fromRunning.pixels.size());
   EXPECT_EQ(std::memcmp(alone.pixels.data(), fromRunning.pixels.data(),
                         alone.pixels.size() * sizeof(float)),

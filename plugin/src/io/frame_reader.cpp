@@ -378,19 +378,4 @@ FrameData readFrame(const AovLayout& layout, int frame, const CameraInputs& came
   return data;
 }
 
-std::optional<FrameCamera> readFrameCamera(const AovLayout& layout, int frame,
-                                           const CameraInputs& cameras, NdcConvention* ndc) {
-  FrameData data;
-  data.frame = frame;
-  if (!cameras.sidecar || !cameras.sidecar->frame(frame).camera) {
-    data.colorPath = expandFramePattern(layout.color.pattern, frame);
-    FileSet files(frame);
-    OpenExr& colorFile = files.get(data.colorPath, "color");
-    data.colorSpec = colorFile.parts[std::size_t(findPart(colorFile, layout.color, "color", frame))];
-  }
-  chooseCamera(data, cameras);
-  if (ndc) *ndc = data.ndc;
-  return data.camera;
-}
-
 }  // namespace taa::io

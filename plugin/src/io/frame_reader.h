@@ -52,10 +52,5 @@ struct CameraInputs {
 // depth/motion windows that differ from color's (stating both), radial depth without a camera.
 FrameData readFrame(const AovLayout& layout, int frame, const CameraInputs& cameras = {});
 
-// Frame `frame`'s camera alone, as readFrame would choose it (the sidecar's, else the color
-// header's), with its NDC convention; no pixels are read. Empty when the frame has none.
-// Throws taa::Error like readFrame for a missing or unreadable color file.
-std::optional<FrameCamera> readFrameCamera(const AovLayout& layout, int frame,
-                                           const CameraInputs& cameras, NdcConvention* ndc);
 
 }  // namespace taa::io

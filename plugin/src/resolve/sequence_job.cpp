@@ -315,7 +315,6 @@ void runWindow(JobRun& run, gl::Context& context) {
     if (run.callbacks.frameDone) run.callbacks.frameDone(reports[std::size_t(index)]);
   });
   std::map<int, io::FrameData> waiting;  // read output frames, pixels dropped once uploaded
-  std::optional<std::pair<int, std::optional<FrameCamera>>> lastCamera;
   bool toldVectorsOnly = false;
   std::vector<int> inRing;
 
@@ -333,15 +332,6 @@ void runWindow(JobRun& run, gl::Context& context) {
     while (!reads.done() && reads.peek() <= window.last) {
       io::FrameData data = reads.next();
       const int f = data.frame;
-      // The camera of the frame before, in the same shot, decides which samples are static.
-      std::optional<FrameCamera> previous;
-      if (!plan.shotStarts.count(f)) {
-        if (lastCamera && lastCamera->first == f - 1) {
-          previous = lastCamera->second;
-        } else {
-          previous = io::readFrameCamera(job.layout, f - 1, run.cameras, nullptr);
-        }
-      }
       if (!data.camera && !toldVectorsOnly && run.callbacks.log) {
         run.callbacks.log("window resolve: frame " + std::to_string(f) +
                           " has no camera matrices (header or sidecar): its samples follow "
@@ -350,12 +340,11 @@ void runWindow(JobRun& run, gl::Context& context) {
       }
       const ResolveInput input = run.inputOf(data);
       try {
-        resolver.addFrame(f, input, previous ? &*previous : nullptr);
+        resolver.addFrame(f, input);
       } catch (const Error& e) {
         throw Error(e.description(), {data.colorPath, f, e.context().channel});
       }
       inRing.push_back(f);
-      lastCamera = std::make_pair(f, data.camera);
       if (plan.windows.count(f)) {
         data.color = TypedImage();  // uploaded: only the header and pass-through are kept
         data.depth = Image();

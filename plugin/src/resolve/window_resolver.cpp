@@ -72,23 +72,26 @@ struct WindowResolver::Impl {
   color::OcioGpuResources toWorkingLuts, fromWorkingLuts;
 
   // The ring: one layer per frame. Colour in the bracket's working space as half (the gather
-  // only averages it), depth signed by window_classify.frag (+ static, - moving), motion in
-  // half (1/1024 px at 1 px of motion, 1/64 at 64).
+  // only averages it), motion in half (1/1024 px at 1 px of motion, 1/64 at 64), depth signed
+  // by window_classify.frag (+ static, - moving). Depth has one layer more than the ring: a
+  // frame is (re)classified from its layer into the spare one, and the two swap.
   int width = 0, height = 0;
   gl::TextureArray colour, depth, motion;
   std::vector<gl::Framebuffer> colourLayerTargets, depthLayerTargets;
-  // Uploads pass through these: colour to be converted, depth to be classified. Two depth
-  // stages, because a shot's first frame is classified once its next frame has arrived.
+  int spareDepthLayer = 0;
+  // Colour passes through here on its way into the working space.
   gl::Texture colourStage;
   SampleType colourStageType = SampleType::Float;
-  gl::Texture depthStage[2];
-  int nextDepthStage = 0;
   gl::Texture output, debug;
   gl::Framebuffer gatherTarget;
   bool gatherHasDebug = false;
 
+  // How a frame's samples were last classified (window_classify.frag's modes).
   struct Slot {
-    int layer = 0;
+    int layer = 0;       // colour and motion
+    int depthLayer = 0;  // signed depth
+    Classify classified = Classify::NoCamera;
+    bool classifiedOnce = false;
     glm::vec2 jitter{0.0f};
     std::optional<FrameCamera> camera;
     RasterWindow window;
@@ -96,9 +99,7 @@ struct WindowResolver::Impl {
     bool hasDepth = false, hasMotion = false;
   };
   std::map<int, Slot> slots;
-  std::vector<int> freeLayers;
-  // A shot's first frame waiting for its next frame to be classified: frame and depth stage.
-  std::optional<std::pair<int, int>> pendingClassify;
+  std::vector<int> freeLayers, freeDepthLayers;
 
   bool debugOutput = false;
   Image lastDebug;
@@ -131,25 +132,30 @@ struct WindowResolver::Impl {
     height = h;
     const int layers = capacity();
     colour = gl::TextureArray(gl, w, h, layers, GL_RGBA16F);
-    depth = gl::TextureArray(gl, w, h, layers, GL_R32F);
+    depth = gl::TextureArray(gl, w, h, layers + 1, GL_R32F);
     motion = gl::TextureArray(gl, w, h, layers, GL_RG16F);
     colourLayerTargets.clear();
     depthLayerTargets.clear();
     freeLayers.clear();
-    for (int layer = layers - 1; layer >= 0; --layer) freeLayers.push_back(layer);
+    freeDepthLayers.clear();
+    for (int layer = layers - 1; layer >= 0; --layer) {
+      freeLayers.push_back(layer);
+      freeDepthLayers.push_back(layer);
+    }
+    spareDepthLayer = layers;
     for (int layer = 0; layer < layers; ++layer) {
       colourLayerTargets.emplace_back(gl, std::vector<gl::Attachment>{{colour, layer}});
+    }
+    for (int layer = 0; layer <= layers; ++layer) {
       depthLayerTargets.emplace_back(gl, std::vector<gl::Attachment>{{depth, layer}});
     }
     colourStage = gl::Texture();
-    for (gl::Texture& stage : depthStage) stage = gl::Texture(gl, w, h, GL_R32F);
     output = gl::Texture(gl, w, h, GL_RGBA32F);
     debug = gl::Texture();
     gatherTarget = gl::Framebuffer();
     ones.assign(std::size_t(w) * h, 1.0f);
     zeros.assign(std::size_t(w) * h * 2, 0.0f);
     slots.clear();
-    pendingClassify.reset();
   }
 
   void prepareColour(const ImageView& color, int layer) {
@@ -168,15 +174,18 @@ struct WindowResolver::Impl {
     gl::checkError(gl, "window prepare pass");
   }
 
-  // Writes the signed depth of `frame` (raw depth in `stage`) into its layer.
-  void classify(int frame, int stage, Classify mode, const Slot* other) {
-    const Slot& slot = slots.at(frame);
+  // Classifies `frame`'s samples (window_classify.frag) against `other` (the frame before or
+  // after it) or uniformly: reads its depth layer (the sign ignored), writes the spare layer,
+  // and the two swap.
+  void classify(Slot& slot, Classify mode, const Slot* other) {
+    if (slot.classifiedOnce && slot.classified == mode && !other) return;
     const gl::Program& p = classifyProgram;
     p.set("uClassifyMode", int(mode));
     p.set("uDepth", int(kDepthUnit));
     p.set("uMotion", int(kMotionUnit));
+    p.set("uDepthLayer", slot.depthLayer);
     p.set("uLayer", slot.layer);
-    p.set("uNextLayer", other ? other->layer : slot.layer);
+    p.set("uOtherLayer", other ? other->layer : slot.layer);
     p.set("uJitter", slot.jitter.x, slot.jitter.y);
     p.set("uTolerance", options.window.staticTolerance);
     if (other) {
@@ -185,15 +194,25 @@ struct WindowResolver::Impl {
       p.setMatrix4("uRasterToCamera", &m.rasterToCamera[0][0]);
       p.setMatrix4("uCameraToOtherRaster", &m.cameraToPreviousRaster[0][0]);
     }
-    depthLayerTargets[slot.layer].bind();
+    depthLayerTargets[spareDepthLayer].bind();
     p.use();
-    depthStage[stage].bind(kDepthUnit);
+    depth.bind(kDepthUnit);
     motion.bind(kMotionUnit);
     triangle.draw();
     gl::checkError(gl, "window classify pass");
+    std::swap(slot.depthLayer, spareDepthLayer);
+    slot.classified = mode;
+    slot.classifiedOnce = true;
   }
 
-  // The classification when nothing decides per sample: vectors only, or camera only.
+  // Whether a frame's samples are told apart one by one (camera, depth and vectors all there,
+  // and camera-motion neither vectors-only nor camera-only).
+  bool classifiesPerSample(const Slot& slot) const {
+    return slot.camera && slot.hasDepth && slot.hasMotion &&
+           options.cameraMotion != CameraMotion::Vectors &&
+           options.cameraMotion != CameraMotion::Camera;
+  }
+
   Classify uniformClassification(const Slot& slot) const {
     if (!slot.camera || !slot.hasDepth || options.cameraMotion == CameraMotion::Vectors) {
       return Classify::NoCamera;
@@ -201,31 +220,42 @@ struct WindowResolver::Impl {
     return Classify::AllStatic;
   }
 
-  bool classifiesPerSample(const Slot& slot) const {
-    return slot.camera && slot.hasDepth && slot.hasMotion &&
-           options.cameraMotion != CameraMotion::Vectors &&
-           options.cameraMotion != CameraMotion::Camera;
+  // Every frame of the window classified against its neighbour inside the window: the frame
+  // before it when that is in the window, else the one after it, else (a window of one) all
+  // static. So a frame's output depends on its window alone, whatever else the ring holds.
+  void classifyWindow(int first, int last) {
+    for (int f = first; f <= last; ++f) {
+      Slot& slot = slots.at(f);
+      if (!classifiesPerSample(slot)) {
+        classify(slot, uniformClassification(slot), nullptr);
+        continue;
+      }
+      const Slot* before = f > first ? &slots.at(f - 1) : nullptr;
+      const Slot* after = f < last ? &slots.at(f + 1) : nullptr;
+      if (before && before->camera) {
+        if (!(slot.classifiedOnce && slot.classified == Classify::PreviousCamera)) {
+          classify(slot, Classify::PreviousCamera, before);
+        }
+      } else if (after && after->camera) {
+        if (!(slot.classifiedOnce && slot.classified == Classify::NextFrame)) {
+          classify(slot, Classify::NextFrame, after);
+        }
+      } else {
+        classify(slot, Classify::AllStatic, nullptr);
+      }
+    }
   }
 
-  // A waiting shot start gets its classification: forward against `next` if that is its next
-  // frame, else (the shot ended with it) every sample static.
-  void settlePending(const Slot* next, int nextFrame) {
-    if (!pendingClassify) return;
-    const auto [frame, stage] = *pendingClassify;
-    pendingClassify.reset();
-    const bool forward = next && nextFrame == frame + 1 && next->camera;
-    classify(frame, stage, forward ? Classify::NextFrame : Classify::AllStatic,
-             forward ? next : nullptr);
-  }
-
-  void addFrame(int frame, const ResolveInput& input, const FrameCamera* previousCamera) {
+  void addFrame(int frame, const ResolveInput& input) {
     const ImageView& color = input.color;
     if (!color || color.channels != 4) {
       throw Error("resolve needs an RGBA color image", {"", std::nullopt, "color"});
     }
     checkPlane(input.depth, color, 1, "depth");
     checkPlane(input.motion, color, 2, "motion");
-    if (slots.count(frame)) throw Error("window resolve: frame " + std::to_string(frame) + " added twice");
+    if (slots.count(frame)) {
+      throw Error("window resolve: frame " + std::to_string(frame) + " added twice", {"", frame});
+    }
     if (slots.empty() && (color.width != width || color.height != height)) {
       allocate(color.width, color.height);
     } else if (color.width != width || color.height != height) {
@@ -240,6 +270,7 @@ struct WindowResolver::Impl {
     }
     Slot slot;
     slot.layer = freeLayers.back();
+    slot.depthLayer = freeDepthLayers.back();
     slot.jitter = input.jitter;
     if (input.camera) slot.camera = *input.camera;
     slot.window = input.window;
@@ -247,36 +278,21 @@ struct WindowResolver::Impl {
     slot.hasDepth = bool(input.depth);
     slot.hasMotion = bool(input.motion);
     freeLayers.pop_back();
-    const Slot& added = slots.emplace(frame, slot).first->second;
+    freeDepthLayers.pop_back();
+    slots.emplace(frame, slot);
 
-    motion.upload(added.layer, input.motion ? input.motion.data : zeros.data(), 2,
+    motion.upload(slot.layer, input.motion ? input.motion.data : zeros.data(), 2,
                   input.motion ? glType(input.motion.type) : GL_FLOAT);
-    settlePending(&added, frame);
-    prepareColour(color, added.layer);
-    const int stage = nextDepthStage;
-    nextDepthStage = 1 - nextDepthStage;
-    if (input.depth) {
-      depthStage[stage].upload(input.depth.data, 1, glType(input.depth.type));
-    } else {
-      depthStage[stage].upload(ones.data(), 1, GL_FLOAT);
-    }
-    if (!classifiesPerSample(added)) {
-      classify(frame, stage, uniformClassification(added), nullptr);
-    } else if (previousCamera) {
-      Slot previous;
-      previous.camera = *previousCamera;
-      previous.layer = added.layer;
-      classify(frame, stage, Classify::PreviousCamera, &previous);
-    } else {
-      pendingClassify = std::make_pair(frame, stage);
-    }
+    depth.upload(slot.depthLayer, input.depth ? input.depth.data : ones.data(), 1,
+                 input.depth ? glType(input.depth.type) : GL_FLOAT);
+    prepareColour(color, slot.layer);
   }
 
   void dropFrame(int frame) {
     const auto found = slots.find(frame);
     if (found == slots.end()) return;
-    if (pendingClassify && pendingClassify->first == frame) settlePending(nullptr, 0);
     freeLayers.push_back(found->second.layer);
+    freeDepthLayers.push_back(found->second.depthLayer);
     slots.erase(found);
   }
 
@@ -287,6 +303,7 @@ struct WindowResolver::Impl {
     p.set("uDepth", int(kDepthUnit));
     p.set("uMotion", int(kMotionUnit));
     p.set("uTargetLayer", target.layer);
+    p.set("uTargetDepthLayer", target.depthLayer);
     p.set("uTargetJitter", target.jitter.x, target.jitter.y);
     const std::array<float, 9> weights =
         reconstructionWeights(options.reconstruction, target.jitter);
@@ -294,7 +311,7 @@ struct WindowResolver::Impl {
     const bool useCameras = target.camera && options.cameraMotion != CameraMotion::Vectors;
     p.set("uTargetHasCamera", useCameras ? 1 : 0);
 
-    std::vector<int> layers, offsets, hasCamera;
+    std::vector<int> layers, depthLayers, offsets, hasCamera;
     std::vector<float> jitters, toTargetAlong, toTargetOffset, toTargetDepthAlong,
         toTargetDepthOffset, fromTargetAlong, fromTargetOffset;
     auto appendMatrix = [](std::vector<float>& to, const glm::mat4& m) {
@@ -315,6 +332,7 @@ struct WindowResolver::Impl {
         }
         const Slot& s = found->second;
         layers.push_back(s.layer);
+        depthLayers.push_back(s.depthLayer);
         offsets.push_back(source - frame);
         jitters.push_back(s.jitter.x);
         jitters.push_back(s.jitter.y);
@@ -337,6 +355,7 @@ struct WindowResolver::Impl {
     p.set("uSourceCount", count);
     if (count == 0) return;
     p.setIntArray("uSourceLayer", layers.data(), count);
+    p.setIntArray("uSourceDepthLayer", depthLayers.data(), count);
     p.setIntArray("uSourceOffset", offsets.data(), count);
     p.setVec2Array("uSourceJitter", jitters.data(), count);
     p.setIntArray("uSourceHasCamera", hasCamera.data(), count);
@@ -353,7 +372,13 @@ struct WindowResolver::Impl {
       throw Error("window resolve: frame " + std::to_string(frame) + " is not in the ring",
                   {"", frame});
     }
-    settlePending(nullptr, 0);
+    for (int f = first; f <= last; ++f) {
+      if (!slots.count(f)) {
+        throw Error("window resolve: frame " + std::to_string(f) + " of frame " +
+                        std::to_string(frame) + "'s window is not in the ring", {"", frame});
+      }
+    }
+    classifyWindow(first, last);
     if (!gatherTarget.id() || gatherHasDebug != debugOutput) {
       debug = debugOutput ? gl::Texture(gl, width, height, GL_RGBA32F) : gl::Texture();
       gatherTarget = gl::Framebuffer(
@@ -400,9 +425,8 @@ WindowResolver::~WindowResolver() = default;
 
 int WindowResolver::capacity() const { return impl_->capacity(); }
 
-void WindowResolver::addFrame(int frame, const ResolveInput& input,
-                              const FrameCamera* previousCamera) {
-  impl_->addFrame(frame, input, previousCamera);
+void WindowResolver::addFrame(int frame, const ResolveInput& input) {
+  impl_->addFrame(frame, input);
 }
 
 void WindowResolver::dropFrame(int frame) { impl_->dropFrame(frame); }
@@ -410,9 +434,9 @@ void WindowResolver::dropFrame(int frame) { impl_->dropFrame(frame); }
 bool WindowResolver::hasFrame(int frame) const { return impl_->slots.count(frame) > 0; }
 
 void WindowResolver::clear() {
-  impl_->pendingClassify.reset();
-  for (auto& [frame, slot] : impl_->slots) impl_->freeLayers.push_back(slot.layer);
-  impl_->slots.clear();
+  std::vector<int> frames;
+  for (const auto& entry : impl_->slots) frames.push_back(entry.first);
+  for (int frame : frames) impl_->dropFrame(frame);
 }
 
 TypedImage WindowResolver::resolve(int frame, int first, int last, SampleType outputType) {

@@ -33,11 +33,9 @@ class WindowResolver {
   int capacity() const;
 
   // Puts `frame` into the ring: colour (converted into the bracket's working space), depth and
-  // motion are uploaded once. `previousCamera` is the camera of frame - 1 when that frame
-  // belongs to the same shot (it decides which samples are static); nullptr at a shot's start,
-  // whose samples are checked against the next frame of the shot when it is added. All frames
-  // must have one size. Throws taa::Error on malformed input, a full ring or a GL failure.
-  void addFrame(int frame, const ResolveInput& input, const FrameCamera* previousCamera);
+  // motion are uploaded once. All frames must have one size. Throws taa::Error on malformed
+  // input, a full ring or a GL failure.
+  void addFrame(int frame, const ResolveInput& input);
   // Takes a frame out of the ring (a no-op for a frame it does not hold).
   void dropFrame(int frame);
   bool hasFrame(int frame) const;
@@ -45,7 +43,9 @@ class WindowResolver {
   void clear();
 
   // Resolves `frame` from the ring's frames first..last (each added, consecutive, one shot,
-  // `frame` among them) and returns RGBA of the frames' size in `outputType`.
+  // `frame` among them) and returns RGBA of the frames' size in `outputType`. The result
+  // depends on those frames and the options alone: which samples are static is decided within
+  // the window (each frame against the one before it there, the first against the one after).
   TypedImage resolve(int frame, int first, int last, SampleType outputType);
 
   // Keep each frame's diagnostics for lastDebug() (one more read-back per frame).
