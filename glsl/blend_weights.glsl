@@ -1,9 +1,5 @@
-// Weights of the exponential blend between history and the current frame.
-
-// Rec. 709 luma of working-space colour.
-float luma(vec3 rgb) {
-  return dot(rgb, vec3(0.2126, 0.7152, 0.0722));
-}
+// Weights of the exponential blend between history and the current frame (luma():
+// color_space.glsl).
 
 // Anti-flicker: when history and current luma agree, trust history more; when they differ, the
 // difference is real change and the current frame gets more weight. Returns the current frame's

@@ -14,3 +14,8 @@ vec3 yCoCgToRgb(vec3 ycocg) {
   float base = ycocg.x - ycocg.z;
   return vec3(base + ycocg.y, ycocg.x + ycocg.z, base - ycocg.y);
 }
+
+// Rec. 709 luma of working-space colour.
+float luma(vec3 rgb) {
+  return dot(rgb, vec3(0.2126, 0.7152, 0.0722));
+}

@@ -1,8 +1,8 @@
 #version 410 core
 // The window resolve of one pixel (DESIGN.md section 4): frame t rebuilt from the raw jittered
 // samples of frames t-K..t+K, each carried to t along its own motion, weighted by its distance
-// to the pixel centre, its distance in frames and its colour agreement with t's own
-// neighbourhood, and kept only if visible in t. No history is resampled, so nothing blurs from
+// to the pixel centre, its distance in frames and its colour agreement with what the pixel
+// gathered from t and the frames nearer in time, and kept only if visible in t. No history is resampled, so nothing blurs from
 // frame to frame, and t depends on t-K..t+K alone.
 //
 // Finding the samples: the ring holds each frame's samples where they were taken, so for each
@@ -65,12 +65,17 @@ layout(location = 1) out vec4 outDebug;  // weight gathered, rejected fraction, 
 
 ivec2 gSize;
 vec2 gPosition;
-vec3 gBoxMin, gBoxMax;
 float gNearest, gFarthest;
 float gThinDepth;  // a surface nearer than all of t's samples that carried samples revealed
-vec4 gSum;
+vec4 gSum;         // t's own samples, its reconstruction, thin features
 float gWeight;
-float gCandidates, gRejected;
+// Each source's samples, kept apart until every source is in (agreementWeight): their weight,
+// weighted colour, weighted luma squared, how many were candidates and how many were hidden.
+float gSourceWeight[MAX_SOURCES];
+vec4 gSourceSum[MAX_SOURCES];
+float gSourceLumaSquares[MAX_SOURCES];
+float gSourceCandidates[MAX_SOURCES];
+float gSourceHidden[MAX_SOURCES];
 
 bool onScreen(ivec2 n) { return all(greaterThanEqual(n, ivec2(0))) && all(lessThan(n, gSize)); }
 
@@ -87,6 +92,13 @@ ivec2 cornerTexel(vec2 p, vec2 jitter) { return ivec2(floor(p - 0.5 - jitter)); 
 void addSample(vec4 colour, float weight) {
   gSum += weight * colour;
   gWeight += weight;
+}
+
+void addSourceSample(int k, vec4 colour, float weight) {
+  float y = luma(colour.rgb);
+  gSourceWeight[k] += weight;
+  gSourceSum[k] += weight * colour;
+  gSourceLumaSquares[k] += weight * y * y;
 }
 
 bool inBlock(ivec2 n, ivec2 corner) {
@@ -117,33 +129,30 @@ void addStaticBlock(int k, ivec2 corner, int skips, ivec2 skip0, ivec2 skip1,
                                     s.y * uToTargetOffset[k][1];
     float weight = spatialWeight(h.xy / h.w - gPosition, uSigma);
     if (weight < 1e-3) continue;
-    gCandidates += 1.0;
+    gSourceCandidates[k] += 1.0;
     float carriedDepth = depth;
     if (!isinf(depth)) {
       carriedDepth = depth * (depthAlong + dot(s, uToTargetDepthAlong[k].xy)) + depthOffset +
                      dot(s, uToTargetDepthOffset[k].xy);
     }
     if (hiddenBehind(carriedDepth, gFarthest, uDepthTolerance)) {
-      gRejected += 1.0;
+      gSourceHidden[k] += 1.0;
       continue;
     }
     vec4 colour = texelFetch(uColour, ivec3(n, layer), 0);
-    bool thin = nearerThanAll(carriedDepth, gNearest, uDepthTolerance);
-    // A thin feature t's own samples missed: farther sources find theirs at its depth.
-    if (thin && weight > 0.01) gThinDepth = min(gThinDepth, carriedDepth);
-    float agreement =
-        thin ? 1.0
-             : colourWeight(rgbToYCoCg(colour.rgb), gBoxMin, gBoxMax, uColourTolerance);
-    if (agreement <= 0.0) {
-      gRejected += 1.0;
+    // A thin feature t's own samples missed (nearer than all of them) cannot agree with
+    // them: it is kept as it is, and farther sources look for theirs at its depth.
+    if (nearerThanAll(carriedDepth, gNearest, uDepthTolerance)) {
+      if (weight > 0.01) gThinDepth = min(gThinDepth, carriedDepth);
+      addSample(colour, weight * frameWeight);
       continue;
     }
-    addSample(colour, weight * agreement * frameWeight);
+    addSourceSample(k, colour, weight);
   }
 }
 
 // The moving samples of source k in the 2x2 block around the chained point.
-void addMovingBlock(int k, vec2 chained, float frameWeight) {
+void addMovingBlock(int k, vec2 chained) {
   int layer = uSourceLayer[k];
   ivec2 corner = cornerTexel(chained, uSourceJitter[k]);
   vec4 depths = depthBlock(corner, uSourceDepthLayer[k]);
@@ -152,14 +161,8 @@ void addMovingBlock(int k, vec2 chained, float frameWeight) {
     if (depths[i] >= 0.0 || !onScreen(n)) continue;  // static samples are the cameras'
     float weight = spatialWeight(vec2(n) + 0.5 + uSourceJitter[k] - chained, uSigma);
     if (weight < 1e-3) continue;
-    gCandidates += 1.0;
-    vec4 colour = texelFetch(uColour, ivec3(n, layer), 0);
-    float agreement = colourWeight(rgbToYCoCg(colour.rgb), gBoxMin, gBoxMax, uColourTolerance);
-    if (agreement <= 0.0) {
-      gRejected += 1.0;
-      continue;
-    }
-    addSample(colour, weight * agreement * frameWeight);
+    gSourceCandidates[k] += 1.0;
+    addSourceSample(k, texelFetch(uColour, ivec3(n, layer), 0), weight);
   }
 }
 
@@ -169,13 +172,18 @@ void main() {
   gSize = textureSize(uColour, 0).xy;
   gSum = vec4(0.0);
   gWeight = 0.0;
-  gCandidates = 0.0;
-  gRejected = 0.0;
+  for (int k = 0; k < uSourceCount; ++k) {
+    gSourceWeight[k] = 0.0;
+    gSourceSum[k] = vec4(0.0);
+    gSourceLumaSquares[k] = 0.0;
+    gSourceCandidates[k] = 0.0;
+    gSourceHidden[k] = 0.0;
+  }
 
-  // Frame t: its own samples, its filtered reconstruction, its colour box and depths.
+  // Frame t: its own samples, its filtered reconstruction, its depths.
   vec4 filtered = vec4(0.0);
-  gBoxMin = vec3(1e30);
-  gBoxMax = vec3(-1e30);
+  float ownWeight = 0.0, ownLumaSquares = 0.0;
+  vec4 ownSum = vec4(0.0);
   gNearest = 1.0 / 0.0;
   gFarthest = 0.0;
   gThinDepth = 1.0 / 0.0;
@@ -189,9 +197,6 @@ void main() {
       ivec2 n = clamp(wanted, ivec2(0), gSize - 1);
       vec4 colour = texelFetch(uColour, ivec3(n, uTargetLayer), 0);
       filtered += uReconstruction[3 * (dy + 1) + dx + 1] * colour;
-      vec3 c = rgbToYCoCg(colour.rgb);
-      gBoxMin = min(gBoxMin, c);
-      gBoxMax = max(gBoxMax, c);
       float signedDepth = texelFetch(uDepth, ivec3(n, uTargetDepthLayer), 0).r;
       float depth = abs(signedDepth);
       depths[3 * (dy + 1) + dx + 1] = depth;
@@ -203,10 +208,16 @@ void main() {
         anyMoving = true;
       }
       if (wanted == n) {  // border texels repeat: count each sample once
-        addSample(colour, spatialWeight(vec2(n) + 0.5 + uTargetJitter - gPosition, uSigma));
+        float w = spatialWeight(vec2(n) + 0.5 + uTargetJitter - gPosition, uSigma);
+        float y = luma(colour.rgb);
+        ownWeight += w;
+        ownSum += w * colour;
+        ownLumaSquares += w * y * y;
       }
     }
   }
+  addSample(ownSum, 1.0);  // weights already applied
+  gWeight += ownWeight - 1.0;
   addSample(filtered, uReconstructionWeight);
 
   // The surfaces the pixel may be looking at: the 3x3's near one and, when it spans two
@@ -282,7 +293,7 @@ void main() {
       if (behindStep) behindAlive = false; else aheadAlive = false;
       continue;
     }
-    addMovingBlock(k, chained, frameWeight);
+    addMovingBlock(k, chained);
     if (behindStep) {
       behind = chained + texelFetch(uMotion, ivec3(at, layer), 0).xy;
     } else {
@@ -291,7 +302,34 @@ void main() {
     }
   }
 
+  // Every source in: the variance of luma within the frames (texture and aliasing inside the
+  // footprint, not change between frames), then each source weighed by how well its mean
+  // agrees with t's own samples' mean.
+  float ownLuma = luma(ownSum.rgb) / ownWeight;
+  float within = ownLumaSquares - ownWeight * ownLuma * ownLuma;
+  float withinWeight = ownWeight;
+  for (int k = 0; k < uSourceCount; ++k) {
+    if (gSourceWeight[k] <= 0.0) continue;
+    float mean = luma(gSourceSum[k].rgb) / gSourceWeight[k];
+    within += gSourceLumaSquares[k] - gSourceWeight[k] * mean * mean;
+    withinWeight += gSourceWeight[k];
+  }
+  float withinVariance = max(within / withinWeight, 0.0);
+  float candidates = 0.0, rejected = 0.0;
+  for (int k = 0; k < uSourceCount; ++k) {
+    candidates += gSourceCandidates[k];
+    rejected += gSourceHidden[k];
+    if (gSourceWeight[k] <= 0.0) continue;
+    float difference = luma(gSourceSum[k].rgb) / gSourceWeight[k] - ownLuma;
+    float agreement = agreementWeight(difference, withinVariance, gSourceWeight[k], ownWeight,
+                                      ownLuma, uColourTolerance);
+    float weight = agreement * temporalWeight(uSourceOffset[k], uFalloff);
+    gSum += weight * gSourceSum[k];
+    gWeight += weight * gSourceWeight[k];
+    rejected += (1.0 - agreement) * (gSourceCandidates[k] - gSourceHidden[k]);
+  }
+
   vec4 working = gSum / gWeight;
   outColor = taaFromWorking(working);
-  outDebug = vec4(gWeight, gCandidates > 0.0 ? gRejected / gCandidates : 0.0, gCandidates, 0.0);
+  outDebug = vec4(gWeight, candidates > 0.0 ? rejected / candidates : 0.0, candidates, 0.0);
 }

@@ -13,16 +13,21 @@ float temporalWeight(int frames, float falloff) {
   return 1.0 / (1.0 + x * x);
 }
 
-// How well a sample agrees with the resolved frame's own 3x3 colour box (YCoCg, working
-// space): 1 inside it, falling linearly to 0 at `tolerance` times the box's luma extent (plus a
-// floor, so flat regions keep a little room) outside. Shading that changed over the window (a
-// shadow that moved) falls outside and is left out.
-float colourWeight(vec3 sampleYCoCg, vec3 boxMin, vec3 boxMax, float tolerance) {
+// How well one source frame's samples agree with the resolved frame's own, as a weight for all
+// of them: shading that changed over the window (a shadow that moved, a light that turned)
+// makes a frame's samples differ from t's by more than their sampling noise explains, texture
+// detail does not. `difference` is the luma of the source's weighted mean minus t's; its
+// expected spread comes from the within-frame variance of the samples (texture and aliasing
+// inside the pixel's footprint) and the weights (about the number of samples) of both means.
+// 1 within `tolerance` standard deviations (plus a floor for flat regions), falling linearly
+// to 0 at twice that; tolerance 0 turns the test off.
+float agreementWeight(float difference, float withinVariance, float sourceWeight,
+                      float targetWeight, float targetLuma, float tolerance) {
   if (tolerance <= 0.0) return 1.0;
-  float margin = tolerance * (boxMax.x - boxMin.x + 0.02);
-  vec3 outside = max(max(boxMin - sampleYCoCg, sampleYCoCg - boxMax), vec3(0.0));
-  float excess = max(outside.x, max(outside.y, outside.z)) / margin;
-  return clamp(1.0 - excess, 0.0, 1.0);
+  float spread = sqrt(withinVariance * (1.0 / max(sourceWeight, 0.05) +
+                                        1.0 / max(targetWeight, 0.05)));
+  float limit = tolerance * spread + 0.01 + 0.05 * abs(targetLuma);
+  return clamp(2.0 - abs(difference) / limit, 0.0, 1.0);
 }
 
 // Visibility in the resolved frame: a carried sample is hidden only when every one of the

@@ -64,11 +64,12 @@ struct WindowOptions {
   float sigma = 0.35f;
   // Frames: temporal weight 1 / (1 + (distance / falloff)^2); 0 weighs every frame alike.
   float falloff = 0.0f;
-  // Colour consistency: a carried sample farther than this from the resolved frame's own 3x3
-  // colour box (YCoCg, working space, relative to the box's size plus a floor) loses its
-  // weight, so shading that changes over the window (moving lights, shadows) does not smear.
-  // Larger keeps more samples. 0 turns the test off.
-  float colourTolerance = 0.5f;
+  // Colour consistency, in standard deviations: a carried sample farther than this from the
+  // weighted mean of what the pixel gathered before it (its own frame's samples and those of
+  // the frames nearer in time; YCoCg, working space, plus a small floor) loses its weight, so
+  // shading that changes over the window (moving lights, shadows) does not smear. Larger
+  // keeps more samples. 0 turns the test off.
+  float colourTolerance = 2.0f;
   // Pixels: a sample counts as static (carried by exact camera reprojection) when its motion
   // vector agrees with the camera's motion within this; otherwise its vectors are chained.
   float staticTolerance = 0.25f;

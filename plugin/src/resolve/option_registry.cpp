@@ -149,9 +149,9 @@ std::vector<Entry> makeEntries() {
        "by distance in time (0: every frame alike)"},
       0.0f, kNoLimit, &WindowOptions::falloff));
   entries.push_back(windowNumberOption(
-      {"window-colour-tolerance", "Mode", "", "", "window mode: how far outside the frame's own "
-       "3x3 colour box a carried sample may be (relative); smaller keeps moving shadows and "
-       "lights sharp, larger keeps more samples (0: off)"},
+      {"window-colour-tolerance", "Mode", "", "", "window mode: standard deviations a carried "
+       "sample may stray from what the pixel gathered from nearer frames; smaller keeps moving "
+       "shadows and lights sharp, larger keeps more samples (0: off)"},
       0.0f, kNoLimit, &WindowOptions::colourTolerance));
   entries.push_back(windowNumberOption(
       {"window-static-tolerance", "Mode", "", "", "window mode: pixels within which a sample's "
