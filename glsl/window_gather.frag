@@ -24,16 +24,14 @@
 
 #include "color_space.glsl"
 #include "camera_geometry.glsl"
+#include "window_ring.glsl"
 #include "window_weights.glsl"
 
 #define MAX_SOURCES 32
 
-uniform sampler2DArray uColour;  // RGBA, working space: each frame's jittered samples
-uniform sampler2DArray uDepth;   // signed planar depth: + static, - moving; +inf = no hit
-uniform sampler2DArray uMotion;  // px, y down, to the previous frame
+uniform usampler2DArray uRing;  // each frame's jittered samples (window_ring.glsl)
 
-uniform int uTargetLayer;       // colour and motion
-uniform int uTargetDepthLayer;  // signed depth
+uniform int uTargetLayer;
 uniform vec2 uTargetJitter;
 uniform bool uTargetHasCamera;
 uniform float uReconstruction[9];  // t's 3x3 unjitter weights (resolve/reconstruction_filter)
@@ -42,8 +40,7 @@ uniform float uReconstruction[9];  // t's 3x3 unjitter weights (resolve/reconstr
 // matrices carry raster positions at a planar depth (resolve/camera: frameCarry): source to
 // target raster and target camera (row z: the depth there), and target to source raster.
 uniform int uSourceCount;
-uniform int uSourceLayer[MAX_SOURCES];       // colour and motion
-uniform int uSourceDepthLayer[MAX_SOURCES];  // signed depth
+uniform int uSourceLayer[MAX_SOURCES];
 uniform int uSourceOffset[MAX_SOURCES];  // s - t
 uniform vec2 uSourceJitter[MAX_SOURCES];
 uniform int uSourceHasCamera[MAX_SOURCES];  // s and t both have cameras
@@ -69,21 +66,17 @@ float gNearest, gFarthest;
 float gThinDepth;  // a surface nearer than all of t's samples that carried samples revealed
 vec4 gSum;         // t's own samples, its reconstruction, thin features
 float gWeight;
-// Each source's samples, kept apart until every source is in (agreementWeight): their weight,
-// weighted colour, weighted luma squared, how many were candidates and how many were hidden.
-float gSourceWeight[MAX_SOURCES];
-vec4 gSourceSum[MAX_SOURCES];
-float gSourceLumaSquares[MAX_SOURCES];
-float gSourceCandidates[MAX_SOURCES];
-float gSourceHidden[MAX_SOURCES];
+// The source being gathered, kept apart until it is weighed whole (agreementWeight): its
+// samples' weight, weighted colour and weighted luma squared; and the counts for diagnostics.
+float gSourceWeight;
+vec4 gSourceSum;
+float gSourceLumaSquares;
+float gCandidates, gHidden, gDisagreeing;  // diagnostics: candidates, hidden, weight left out
 
 bool onScreen(ivec2 n) { return all(greaterThanEqual(n, ivec2(0))) && all(lessThan(n, gSize)); }
 
-// The signed depths of the 2x2 texels corner, corner + (1, 0), + (0, 1), + (1, 1), in that
-// order, from one gather (edge texels repeat; callers skip texels off screen).
-vec4 depthBlock(ivec2 corner, int layer) {
-  vec4 g = textureGather(uDepth, vec3((vec2(corner) + 1.0) / vec2(gSize), float(layer)));
-  return vec4(g.w, g.z, g.x, g.y);
+RingSample ringSample(ivec2 n, int layer) {
+  return unpackRingSample(texelFetch(uRing, ivec3(n, layer), 0));
 }
 
 // The texel whose sample (at texel + 0.5 + jitter) is the lower-left of the four around `p`.
@@ -94,11 +87,11 @@ void addSample(vec4 colour, float weight) {
   gWeight += weight;
 }
 
-void addSourceSample(int k, vec4 colour, float weight) {
+void addSourceSample(vec4 colour, float weight) {
   float y = luma(colour.rgb);
-  gSourceWeight[k] += weight;
-  gSourceSum[k] += weight * colour;
-  gSourceLumaSquares[k] += weight * y * y;
+  gSourceWeight += weight;
+  gSourceSum += weight * colour;
+  gSourceLumaSquares += weight * y * y;
 }
 
 bool inBlock(ivec2 n, ivec2 corner) {
@@ -110,7 +103,6 @@ bool inBlock(ivec2 n, ivec2 corner) {
 void addStaticBlock(int k, ivec2 corner, int skips, ivec2 skip0, ivec2 skip1,
                     float frameWeight) {
   int layer = uSourceLayer[k];
-  vec4 depths = depthBlock(corner, uSourceDepthLayer[k]);
   vec2 first = vec2(corner) + 0.5 + uSourceJitter[k];
   // Carried positions are affine in the sample position: one product per block, columns after.
   vec4 along = uToTargetAlong[k] * vec4(first, 1.0, 0.0);
@@ -120,34 +112,35 @@ void addStaticBlock(int k, ivec2 corner, int skips, ivec2 skip0, ivec2 skip1,
   for (int i = 0; i < 4; ++i) {
     ivec2 step = ivec2(i & 1, i >> 1);
     ivec2 n = corner + step;
-    float depth = depths[i];
-    if (depth < 0.0 || !onScreen(n)) continue;  // moving samples are the chains'
+    if (!onScreen(n)) continue;
     if ((skips > 0 && inBlock(n, skip0)) || (skips > 1 && inBlock(n, skip1))) continue;
+    RingSample entry = ringSample(n, layer);
+    float depth = entry.depth;
+    if (depth < 0.0) continue;  // moving samples are the chains'
     vec2 s = vec2(step);
     vec4 a = along + s.x * uToTargetAlong[k][0] + s.y * uToTargetAlong[k][1];
     vec4 h = isinf(depth) ? a : depth * a + offset + s.x * uToTargetOffset[k][0] +
                                     s.y * uToTargetOffset[k][1];
     float weight = spatialWeight(h.xy / h.w - gPosition, uSigma);
     if (weight < 1e-3) continue;
-    gSourceCandidates[k] += 1.0;
+    gCandidates += 1.0;
     float carriedDepth = depth;
     if (!isinf(depth)) {
       carriedDepth = depth * (depthAlong + dot(s, uToTargetDepthAlong[k].xy)) + depthOffset +
                      dot(s, uToTargetDepthOffset[k].xy);
     }
     if (hiddenBehind(carriedDepth, gFarthest, uDepthTolerance)) {
-      gSourceHidden[k] += 1.0;
+      gHidden += 1.0;
       continue;
     }
-    vec4 colour = texelFetch(uColour, ivec3(n, layer), 0);
     // A thin feature t's own samples missed (nearer than all of them) cannot agree with
     // them: it is kept as it is, and farther sources look for theirs at its depth.
     if (nearerThanAll(carriedDepth, gNearest, uDepthTolerance)) {
       if (weight > 0.01) gThinDepth = min(gThinDepth, carriedDepth);
-      addSample(colour, weight * frameWeight);
+      addSample(entry.colour, weight * frameWeight);
       continue;
     }
-    addSourceSample(k, colour, weight);
+    addSourceSample(entry.colour, weight);
   }
 }
 
@@ -155,30 +148,27 @@ void addStaticBlock(int k, ivec2 corner, int skips, ivec2 skip0, ivec2 skip1,
 void addMovingBlock(int k, vec2 chained) {
   int layer = uSourceLayer[k];
   ivec2 corner = cornerTexel(chained, uSourceJitter[k]);
-  vec4 depths = depthBlock(corner, uSourceDepthLayer[k]);
   for (int i = 0; i < 4; ++i) {
     ivec2 n = corner + ivec2(i & 1, i >> 1);
-    if (depths[i] >= 0.0 || !onScreen(n)) continue;  // static samples are the cameras'
+    if (!onScreen(n)) continue;
+    RingSample entry = ringSample(n, layer);
+    if (entry.depth >= 0.0) continue;  // static samples are the cameras'
     float weight = spatialWeight(vec2(n) + 0.5 + uSourceJitter[k] - chained, uSigma);
     if (weight < 1e-3) continue;
-    gSourceCandidates[k] += 1.0;
-    addSourceSample(k, texelFetch(uColour, ivec3(n, layer), 0), weight);
+    gCandidates += 1.0;
+    addSourceSample(entry.colour, weight);
   }
 }
 
 void main() {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
   gPosition = gl_FragCoord.xy;
-  gSize = textureSize(uColour, 0).xy;
+  gSize = textureSize(uRing, 0).xy;
   gSum = vec4(0.0);
   gWeight = 0.0;
-  for (int k = 0; k < uSourceCount; ++k) {
-    gSourceWeight[k] = 0.0;
-    gSourceSum[k] = vec4(0.0);
-    gSourceLumaSquares[k] = 0.0;
-    gSourceCandidates[k] = 0.0;
-    gSourceHidden[k] = 0.0;
-  }
+  gCandidates = 0.0;
+  gHidden = 0.0;
+  gDisagreeing = 0.0;
 
   // Frame t: its own samples, its filtered reconstruction, its depths.
   vec4 filtered = vec4(0.0);
@@ -195,16 +185,17 @@ void main() {
     for (int dx = -1; dx <= 1; ++dx) {
       ivec2 wanted = pixel + ivec2(dx, dy);
       ivec2 n = clamp(wanted, ivec2(0), gSize - 1);
-      vec4 colour = texelFetch(uColour, ivec3(n, uTargetLayer), 0);
+      RingSample entry = ringSample(n, uTargetLayer);
+      vec4 colour = entry.colour;
       filtered += uReconstruction[3 * (dy + 1) + dx + 1] * colour;
-      float signedDepth = texelFetch(uDepth, ivec3(n, uTargetDepthLayer), 0).r;
+      float signedDepth = entry.depth;
       float depth = abs(signedDepth);
       depths[3 * (dy + 1) + dx + 1] = depth;
       gNearest = min(gNearest, depth);
       gFarthest = max(gFarthest, depth);
       if (signedDepth < 0.0 && depth <= movingDepth) {
         movingDepth = depth;
-        startMotion = texelFetch(uMotion, ivec3(n, uTargetLayer), 0).xy;
+        startMotion = entry.motion;
         anyMoving = true;
       }
       if (wanted == n) {  // border texels repeat: count each sample once
@@ -247,10 +238,20 @@ void main() {
   bool behindAlive = anyMoving;
   bool aheadAlive = anyMoving;
 
+  // The luma variance within frames (texture and aliasing inside the footprint, not change
+  // between frames), pooled over t's own samples and each source weighed so far: the noise a
+  // source's mean is tested against.
+  float ownLuma = luma(ownSum.rgb) / ownWeight;
+  float within = ownLumaSquares - ownWeight * ownLuma * ownLuma;
+  float withinWeight = ownWeight;
+
   for (int k = 0; k < uSourceCount; ++k) {
     int layer = uSourceLayer[k];
     vec2 jitter = uSourceJitter[k];
     float frameWeight = temporalWeight(uSourceOffset[k], uFalloff);
+    gSourceWeight = 0.0;
+    gSourceSum = vec4(0.0);
+    gSourceLumaSquares = 0.0;
     if (uSourceHasCamera[k] != 0 && uTargetHasCamera) {
       vec4 nearSource = carried(uFromTargetAlong[k], uFromTargetOffset[k], gPosition, nearDepth);
       ivec2 first = cornerTexel(nearSource.xy / nearSource.w, jitter);
@@ -272,7 +273,8 @@ void main() {
     }
 
     bool behindStep = uSourceOffset[k] < 0;
-    if (behindStep ? !behindAlive : !aheadAlive) continue;
+    bool chainAlive = behindStep ? behindAlive : aheadAlive;
+    if (chainAlive) {
     vec2 chained;
     if (behindStep) {
       chained = behind;
@@ -283,53 +285,43 @@ void main() {
       for (int iteration = 0; iteration < 2; ++iteration) {
         ivec2 n = ivec2(floor(chained));
         if (!onScreen(n)) break;
-        chained = aheadPrevious - texelFetch(uMotion, ivec3(n, layer), 0).xy;
+        chained = aheadPrevious - ringMotion(texelFetch(uRing, ivec3(n, layer), 0));
       }
     }
     ivec2 at = ivec2(floor(chained));
     // The chain ends off screen, or where the frame sees something static: the moving surface
     // is not there (hidden, or gone).
-    if (!onScreen(at) || texelFetch(uDepth, ivec3(at, uSourceDepthLayer[k]), 0).r >= 0.0) {
+    uvec4 atTexel = onScreen(at) ? texelFetch(uRing, ivec3(at, layer), 0) : uvec4(0u);
+    if (!onScreen(at) || ringDepth(atTexel) >= 0.0) {
       if (behindStep) behindAlive = false; else aheadAlive = false;
-      continue;
-    }
-    addMovingBlock(k, chained);
-    if (behindStep) {
-      behind = chained + texelFetch(uMotion, ivec3(at, layer), 0).xy;
     } else {
-      velocity = chained - aheadPrevious;
-      aheadPrevious = chained;
+      addMovingBlock(k, chained);
+      if (behindStep) {
+        behind = chained + ringMotion(atTexel);
+      } else {
+        velocity = chained - aheadPrevious;
+        aheadPrevious = chained;
+      }
     }
-  }
+    }
 
-  // Every source in: the variance of luma within the frames (texture and aliasing inside the
-  // footprint, not change between frames), then each source weighed by how well its mean
-  // agrees with t's own samples' mean.
-  float ownLuma = luma(ownSum.rgb) / ownWeight;
-  float within = ownLumaSquares - ownWeight * ownLuma * ownLuma;
-  float withinWeight = ownWeight;
-  for (int k = 0; k < uSourceCount; ++k) {
-    if (gSourceWeight[k] <= 0.0) continue;
-    float mean = luma(gSourceSum[k].rgb) / gSourceWeight[k];
-    within += gSourceLumaSquares[k] - gSourceWeight[k] * mean * mean;
-    withinWeight += gSourceWeight[k];
-  }
-  float withinVariance = max(within / withinWeight, 0.0);
-  float candidates = 0.0, rejected = 0.0;
-  for (int k = 0; k < uSourceCount; ++k) {
-    candidates += gSourceCandidates[k];
-    rejected += gSourceHidden[k];
-    if (gSourceWeight[k] <= 0.0) continue;
-    float difference = luma(gSourceSum[k].rgb) / gSourceWeight[k] - ownLuma;
-    float agreement = agreementWeight(difference, withinVariance, gSourceWeight[k], ownWeight,
-                                      ownLuma, uColourTolerance);
-    float weight = agreement * temporalWeight(uSourceOffset[k], uFalloff);
-    gSum += weight * gSourceSum[k];
-    gWeight += weight * gSourceWeight[k];
-    rejected += (1.0 - agreement) * (gSourceCandidates[k] - gSourceHidden[k]);
+    // The source weighed whole: how well its samples' mean agrees with t's own.
+    if (gSourceWeight > 0.0) {
+      float mean = luma(gSourceSum.rgb) / gSourceWeight;
+      float agreement = agreementWeight(mean - ownLuma, max(within / withinWeight, 0.0),
+                                        gSourceWeight, ownWeight, ownLuma, uColourTolerance);
+      gSum += agreement * frameWeight * gSourceSum;
+      gWeight += agreement * frameWeight * gSourceWeight;
+      gDisagreeing += (1.0 - agreement) * gSourceWeight;
+      within += gSourceLumaSquares - gSourceWeight * mean * mean;
+      withinWeight += gSourceWeight;
+    }
   }
 
   vec4 working = gSum / gWeight;
   outColor = taaFromWorking(working);
-  outDebug = vec4(gWeight, candidates > 0.0 ? rejected / candidates : 0.0, candidates, 0.0);
+  // Rejected: hidden candidates, and the weight of sources left out for their colour.
+  float rejected = gHidden + gDisagreeing;
+  outDebug = vec4(gWeight, gCandidates > 0.0 ? min(rejected / gCandidates, 1.0) : 0.0,
+                  gCandidates, 0.0);
 }

@@ -94,6 +94,23 @@ TEST(ShaderExpansion, InsertsDefinesAfterTheVersionLine) {
   EXPECT_EQ(insertAfterFirstLine("#version 410 core\n#line 1 0\nx\n", {"#define A 1", "#define B"}),
             "#version 410 core\n#define A 1\n#define B\n#line 1 0\nx\n");
   EXPECT_EQ(insertAfterFirstLine("#version 410 core\nx\n", {}), "#version 410 core\nx\n");
+  // #extension lines must precede any code, defines (or generated functions) included.
+  EXPECT_EQ(insertAfterFirstLine("#version 410 core\n#extension GL_X : require\n#line 1 0\nx\n",
+                                 {"#define A 1"}),
+            "#version 410 core\n#extension GL_X : require\n#define A 1\n#line 1 0\nx\n");
+}
+
+// Extensions from any file go up to just after #version, once each; their lines stay, blank,
+// so the driver's line numbers still name the right file lines.
+TEST(ShaderExpansion, HoistsExtensionLinesAfterTheVersion) {
+  const std::map<std::string, std::string> files = {
+      {"main.frag", "#version 410 core\n#include \"a.glsl\"\nvoid main() {}\n"},
+      {"a.glsl", "#extension GL_X : require\nint a;\n#extension GL_X : require\n"},
+  };
+  std::vector<std::string> names;
+  EXPECT_EQ(expandShaderIncludes("main.frag", filesLookup(files), &names),
+            "#version 410 core\n#extension GL_X : require\n#line 1 0\n\n#line 1 1\n\nint a;\n"
+            "\n#line 3 0\nvoid main() {}\n");
 }
 
 TEST(ShaderExpansion, AnnotatesMesaAndNvidiaLogsWithFileLines) {

@@ -1,6 +1,8 @@
 // taa-resolve-bench: taatool's three stages timed apart, one after another on one thread: reading
 // a few frames, resolving them over and over on the GL side (upload, passes, read-back in the
-// output type), and writing the last results. Prints CPU and wall milliseconds per frame for
+// output type), and writing the last results. In window mode (--mode window) it reads the 2K+1
+// frames of one window (--frames must name at least that many) and times adding a frame to
+// the ring (upload, conversion, classification) and resolving the centre frame apart. Prints CPU and wall milliseconds per frame for
 // each. CPU time is the whole process's (user + system; llvmpipe's and OpenEXR's threads
 // included): on a shared machine it is the steadier figure.
 //   taa-resolve-bench [--repeat N] <taatool arguments: inputs, --frames, -o, resolve options>
@@ -21,7 +23,9 @@
 #include "io/exr_writer.h"
 #include "io/frame_reader.h"
 #include "io/sequence_pattern.h"
+#include "resolve/jitter.h"
 #include "resolve/resolver.h"
+#include "resolve/window_resolver.h"
 #include "taa/error.h"
 
 namespace {
@@ -47,6 +51,59 @@ std::string timePerRun(int count, const std::function<void(int)>& work) {
   return text;
 }
 
+taa::ResolveInput inputOf(const taa::io::FrameData& data) {
+  taa::ResolveInput input;
+  input.color = &data.color;
+  input.depth = data.depth.empty() ? nullptr : &data.depth;
+  input.motion = data.motion.empty() ? nullptr : &data.motion;
+  input.jitter = taa::frameJitter(data.frame, taa::JitterOptions{});
+  input.camera = data.camera ? &*data.camera : nullptr;
+  input.window = data.window;
+  input.ndc = data.ndc;
+  return input;
+}
+
+// Window mode: one window's frames read, added to the ring, and its centre resolved.
+int runWindow(const taa::SequenceJob& job, int repeat) {
+  using namespace taa;
+  const int size = 2 * job.resolve.window.radius + 1;
+  if (int(job.frames.size()) < size) {
+    throw Error("window mode needs --frames to name at least 2K+1 = " + std::to_string(size) +
+                " frames");
+  }
+  std::vector<io::FrameData> frames(static_cast<std::size_t>(size));
+  const std::string read = timePerRun(size, [&](int n) {
+    frames[std::size_t(n)] = io::readFrame(job.layout, job.frames[std::size_t(n)]);
+  });
+  auto context = gl::Context::create(job.backend);
+  WindowResolver resolver(*context, job.resolve);
+  const int first = frames.front().frame, last = frames.back().frame;
+  const int centre = frames[std::size_t(size / 2)].frame;
+  auto fill = [&] {
+    for (const io::FrameData& data : frames) resolver.addFrame(data.frame, inputOf(data));
+  };
+  fill();  // compiles the programs and allocates the ring
+  resolver.resolve(centre, first, last, SampleType::Float);
+  resolver.clear();
+  const std::string add = timePerRun(size, [&](int n) {
+    resolver.addFrame(frames[std::size_t(n)].frame, inputOf(frames[std::size_t(n)]));
+  });
+  io::WriteOptions write = job.write;
+  write.rgbaNames = outputChannelNames(job);
+  const SampleType outputType = io::outputSampleType(write, frames[0].colorSpec);
+  // The first resolve of a window classifies its frames; the repeats time the gather alone,
+  // as taatool's steady state is (one new frame classified per output).
+  resolver.resolve(centre, first, last, outputType);
+  const std::string resolve = timePerRun(repeat, [&](int) {
+    resolver.resolve(centre, first, last, outputType);
+  });
+  std::printf("%dx%d, window K=%d: read %s per frame; add to the ring %s per frame; resolve %s "
+              "over %d resolves\n",
+              frames[0].color.width(), frames[0].color.height(), job.resolve.window.radius,
+              read.c_str(), add.c_str(), resolve.c_str(), repeat);
+  return 0;
+}
+
 int run(std::vector<std::string> args) {
   using namespace taa;
   int repeat = 24;
@@ -58,6 +115,7 @@ int run(std::vector<std::string> args) {
   cli::useOcioEnvironmentUnlessGiven(cl, args);  // as taatool
   cli::resolveFrameList(cl);
   const SequenceJob& job = cl.job;
+  if (job.resolve.mode == ResolveMode::Window) return runWindow(job, repeat);
   const int count = int(std::min<std::size_t>(job.frames.size(), 4));
   std::vector<io::FrameData> frames(static_cast<std::size_t>(count));
   const std::string read = timePerRun(count, [&](int n) {

@@ -1,5 +1,6 @@
 #include "gl/shader_library.h"
 
+#include <algorithm>
 #include <cctype>
 #include <map>
 #include <regex>
@@ -60,12 +61,15 @@ class IncludeExpander {
       if (directive(lines[i], &rest) == "version") versionLine = i;
     }
     if (versionLine == lines.size()) throw Error("shader \"" + name + "\" has no #version line");
-    // GLSL wants #version first, and defines go right after it: blank its own line instead.
-    out_ = lines[versionLine] + "\n#line 1 0\n";
+    // GLSL wants #version first, then #extension lines before any code; defines go right
+    // after them. Those lines are blanked where they stand, so line numbers stay true.
     lines[versionLine].clear();
+    const std::string version = splitLines(text)[versionLine];
     files_.push_back(name);
     expandLines(name, 0, lines);
-    return out_;
+    std::string header = version + "\n";
+    for (const std::string& extension : extensions_) header += extension + "\n";
+    return header + "#line 1 0\n" + out_;
   }
 
   std::vector<std::string> files() const { return files_; }
@@ -78,6 +82,13 @@ class IncludeExpander {
       const std::string word = directive(lines[i], &rest);
       if (word == "version" && index != 0) {
         throw Error(where + "#version is only allowed in the top-level shader");
+      }
+      if (word == "extension") {
+        if (std::find(extensions_.begin(), extensions_.end(), lines[i]) == extensions_.end()) {
+          extensions_.push_back(lines[i]);
+        }
+        out_ += "\n";
+        continue;
       }
       if (word != "include") {
         out_ += lines[i] + "\n";
@@ -108,6 +119,7 @@ class IncludeExpander {
 
   const ShaderLookup& lookup_;
   std::vector<std::string> files_;
+  std::vector<std::string> extensions_;  // hoisted to just after #version
   std::string out_;
 };
 
@@ -136,8 +148,15 @@ std::string insertAfterFirstLine(const std::string& source, const std::vector<st
   if (lines.empty()) return source;
   std::string inserted;
   for (const std::string& line : lines) inserted += line + "\n";
-  const size_t end = source.find('\n');
+  size_t end = source.find('\n');
   if (end == std::string::npos) return source + "\n" + inserted;
+  // After the #extension lines that follow #version too: they must precede any code.
+  std::string rest;
+  for (size_t next = source.find('\n', end + 1); next != std::string::npos;
+       next = source.find('\n', end + 1)) {
+    if (directive(source.substr(end + 1, next - end - 1), &rest) != "extension") break;
+    end = next;
+  }
   return source.substr(0, end + 1) + inserted + source.substr(end + 1);
 }
 

@@ -18,9 +18,10 @@ namespace {
 
 // Texture units. Every pass binds its own inputs from unit 0; the bracket's LUTs follow.
 enum TextureUnit : int {
-  kColourUnit = 0,  // gather: the ring's colour; prepare: the staged frame
-  kDepthUnit,       // gather: the ring's signed depth; classify: the staged depth
-  kMotionUnit,      // gather and classify: the ring's motion
+  kRingUnit = 0,       // gather and classify: the ring
+  kColourStageUnit = 0,  // prepare: the staged frame
+  kDepthStageUnit,
+  kMotionStageUnit,
   kFirstOcioUnit
 };
 
@@ -71,16 +72,17 @@ struct WindowResolver::Impl {
   gl::Program prepareProgram, classifyProgram, gatherProgram;
   color::OcioGpuResources toWorkingLuts, fromWorkingLuts;
 
-  // The ring: one layer per frame. Colour in the bracket's working space as half (the gather
-  // only averages it), motion in half (1/1024 px at 1 px of motion, 1/64 at 64), depth signed
-  // by window_classify.frag (+ static, - moving). Depth has one layer more than the ring: a
-  // frame is (re)classified from its layer into the spare one, and the two swap.
+  // The ring: one layer per frame, every sample packed in one texel (window_ring.glsl): colour
+  // in the bracket's working space and motion as halves (the gather only averages colour;
+  // motion keeps 1/1024 px at 1 px, 1/64 at 64), the depth as a float, signed by
+  // window_classify.frag. One layer more than the ring holds: a frame is (re)classified from
+  // its layer into the spare one, and the two swap.
   int width = 0, height = 0;
-  gl::TextureArray colour, depth, motion;
-  std::vector<gl::Framebuffer> colourLayerTargets, depthLayerTargets;
-  int spareDepthLayer = 0;
-  // Colour passes through here on its way into the working space.
-  gl::Texture colourStage;
+  gl::TextureArray ring;
+  std::vector<gl::Framebuffer> layerTargets;
+  int spareLayer = 0;
+  // A frame passes through these on its way into the ring.
+  gl::Texture colourStage, depthStage, motionStage;
   SampleType colourStageType = SampleType::Float;
   gl::Texture output, debug;
   gl::Framebuffer gatherTarget;
@@ -88,8 +90,7 @@ struct WindowResolver::Impl {
 
   // How a frame's samples were last classified (window_classify.frag's modes).
   struct Slot {
-    int layer = 0;       // colour and motion
-    int depthLayer = 0;  // signed depth
+    int layer = 0;
     Classify classified = Classify::NoCamera;
     bool classifiedOnce = false;
     glm::vec2 jitter{0.0f};
@@ -99,7 +100,7 @@ struct WindowResolver::Impl {
     bool hasDepth = false, hasMotion = false;
   };
   std::map<int, Slot> slots;
-  std::vector<int> freeLayers, freeDepthLayers;
+  std::vector<int> freeLayers;
 
   bool debugOutput = false;
   Image lastDebug;
@@ -130,26 +131,18 @@ struct WindowResolver::Impl {
   void allocate(int w, int h) {
     width = w;
     height = h;
-    const int layers = capacity();
-    colour = gl::TextureArray(gl, w, h, layers, GL_RGBA16F);
-    depth = gl::TextureArray(gl, w, h, layers + 1, GL_R32F);
-    motion = gl::TextureArray(gl, w, h, layers, GL_RG16F);
-    colourLayerTargets.clear();
-    depthLayerTargets.clear();
+    const int layers = capacity() + 1;
+    ring = gl::TextureArray(gl, w, h, layers, GL_RGBA32UI);
+    layerTargets.clear();
     freeLayers.clear();
-    freeDepthLayers.clear();
-    for (int layer = layers - 1; layer >= 0; --layer) {
-      freeLayers.push_back(layer);
-      freeDepthLayers.push_back(layer);
-    }
-    spareDepthLayer = layers;
+    for (int layer = layers - 2; layer >= 0; --layer) freeLayers.push_back(layer);
+    spareLayer = layers - 1;
     for (int layer = 0; layer < layers; ++layer) {
-      colourLayerTargets.emplace_back(gl, std::vector<gl::Attachment>{{colour, layer}});
-    }
-    for (int layer = 0; layer <= layers; ++layer) {
-      depthLayerTargets.emplace_back(gl, std::vector<gl::Attachment>{{depth, layer}});
+      layerTargets.emplace_back(gl, std::vector<gl::Attachment>{{ring, layer}});
     }
     colourStage = gl::Texture();
+    depthStage = gl::Texture(gl, w, h, GL_R32F);
+    motionStage = gl::Texture(gl, w, h, GL_RG32F);
     output = gl::Texture(gl, w, h, GL_RGBA32F);
     debug = gl::Texture();
     gatherTarget = gl::Framebuffer();
@@ -158,32 +151,40 @@ struct WindowResolver::Impl {
     slots.clear();
   }
 
-  void prepareColour(const ImageView& color, int layer) {
+  // Packs a frame into `layer`: colour into the working space, depth, motion.
+  void prepare(const ResolveInput& input, int layer) {
+    const ImageView& color = input.color;
     if (!colourStage.id() || colourStageType != color.type) {
       colourStageType = color.type;
       colourStage = gl::Texture(gl, width, height,
                                 color.type == SampleType::Half ? GL_RGBA16F : GL_RGBA32F);
     }
     colourStage.upload(color.data, 4, glType(color.type));
-    colourLayerTargets[layer].bind();
+    depthStage.upload(input.depth ? input.depth.data : ones.data(), 1,
+                      input.depth ? glType(input.depth.type) : GL_FLOAT);
+    motionStage.upload(input.motion ? input.motion.data : zeros.data(), 2,
+                       input.motion ? glType(input.motion.type) : GL_FLOAT);
+    layerTargets[layer].bind();
     prepareProgram.use();
-    prepareProgram.set("uColour", int(kColourUnit));
-    colourStage.bind(kColourUnit);
+    prepareProgram.set("uColour", int(kColourStageUnit));
+    prepareProgram.set("uDepth", int(kDepthStageUnit));
+    prepareProgram.set("uMotion", int(kMotionStageUnit));
+    colourStage.bind(kColourStageUnit);
+    depthStage.bind(kDepthStageUnit);
+    motionStage.bind(kMotionStageUnit);
     toWorkingLuts.bind();
     triangle.draw();
     gl::checkError(gl, "window prepare pass");
   }
 
-  // Classifies `frame`'s samples (window_classify.frag) against `other` (the frame before or
-  // after it) or uniformly: reads its depth layer (the sign ignored), writes the spare layer,
+  // Classifies a frame's samples (window_classify.frag) against `other` (the frame before or
+  // after it) or uniformly: reads its layer (the depth's sign ignored), writes the spare layer,
   // and the two swap.
   void classify(Slot& slot, Classify mode, const Slot* other) {
     if (slot.classifiedOnce && slot.classified == mode && !other) return;
     const gl::Program& p = classifyProgram;
     p.set("uClassifyMode", int(mode));
-    p.set("uDepth", int(kDepthUnit));
-    p.set("uMotion", int(kMotionUnit));
-    p.set("uDepthLayer", slot.depthLayer);
+    p.set("uRing", int(kRingUnit));
     p.set("uLayer", slot.layer);
     p.set("uOtherLayer", other ? other->layer : slot.layer);
     p.set("uJitter", slot.jitter.x, slot.jitter.y);
@@ -194,13 +195,12 @@ struct WindowResolver::Impl {
       p.setMatrix4("uRasterToCamera", &m.rasterToCamera[0][0]);
       p.setMatrix4("uCameraToOtherRaster", &m.cameraToPreviousRaster[0][0]);
     }
-    depthLayerTargets[spareDepthLayer].bind();
+    layerTargets[spareLayer].bind();
     p.use();
-    depth.bind(kDepthUnit);
-    motion.bind(kMotionUnit);
+    ring.bind(kRingUnit);
     triangle.draw();
     gl::checkError(gl, "window classify pass");
-    std::swap(slot.depthLayer, spareDepthLayer);
+    std::swap(slot.layer, spareLayer);
     slot.classified = mode;
     slot.classifiedOnce = true;
   }
@@ -270,7 +270,6 @@ struct WindowResolver::Impl {
     }
     Slot slot;
     slot.layer = freeLayers.back();
-    slot.depthLayer = freeDepthLayers.back();
     slot.jitter = input.jitter;
     if (input.camera) slot.camera = *input.camera;
     slot.window = input.window;
@@ -278,32 +277,22 @@ struct WindowResolver::Impl {
     slot.hasDepth = bool(input.depth);
     slot.hasMotion = bool(input.motion);
     freeLayers.pop_back();
-    freeDepthLayers.pop_back();
     slots.emplace(frame, slot);
-
-    motion.upload(slot.layer, input.motion ? input.motion.data : zeros.data(), 2,
-                  input.motion ? glType(input.motion.type) : GL_FLOAT);
-    depth.upload(slot.depthLayer, input.depth ? input.depth.data : ones.data(), 1,
-                 input.depth ? glType(input.depth.type) : GL_FLOAT);
-    prepareColour(color, slot.layer);
+    prepare(input, slot.layer);
   }
 
   void dropFrame(int frame) {
     const auto found = slots.find(frame);
     if (found == slots.end()) return;
     freeLayers.push_back(found->second.layer);
-    freeDepthLayers.push_back(found->second.depthLayer);
     slots.erase(found);
   }
 
   void setGatherUniforms(int frame, int first, int last) {
     const Slot& target = slots.at(frame);
     const gl::Program& p = gatherProgram;
-    p.set("uColour", int(kColourUnit));
-    p.set("uDepth", int(kDepthUnit));
-    p.set("uMotion", int(kMotionUnit));
+    p.set("uRing", int(kRingUnit));
     p.set("uTargetLayer", target.layer);
-    p.set("uTargetDepthLayer", target.depthLayer);
     p.set("uTargetJitter", target.jitter.x, target.jitter.y);
     const std::array<float, 9> weights =
         reconstructionWeights(options.reconstruction, target.jitter);
@@ -311,7 +300,7 @@ struct WindowResolver::Impl {
     const bool useCameras = target.camera && options.cameraMotion != CameraMotion::Vectors;
     p.set("uTargetHasCamera", useCameras ? 1 : 0);
 
-    std::vector<int> layers, depthLayers, offsets, hasCamera;
+    std::vector<int> layers, offsets, hasCamera;
     std::vector<float> jitters, toTargetAlong, toTargetOffset, toTargetDepthAlong,
         toTargetDepthOffset, fromTargetAlong, fromTargetOffset;
     auto appendMatrix = [](std::vector<float>& to, const glm::mat4& m) {
@@ -332,7 +321,6 @@ struct WindowResolver::Impl {
         }
         const Slot& s = found->second;
         layers.push_back(s.layer);
-        depthLayers.push_back(s.depthLayer);
         offsets.push_back(source - frame);
         jitters.push_back(s.jitter.x);
         jitters.push_back(s.jitter.y);
@@ -355,7 +343,6 @@ struct WindowResolver::Impl {
     p.set("uSourceCount", count);
     if (count == 0) return;
     p.setIntArray("uSourceLayer", layers.data(), count);
-    p.setIntArray("uSourceDepthLayer", depthLayers.data(), count);
     p.setIntArray("uSourceOffset", offsets.data(), count);
     p.setVec2Array("uSourceJitter", jitters.data(), count);
     p.setIntArray("uSourceHasCamera", hasCamera.data(), count);
@@ -394,9 +381,7 @@ struct WindowResolver::Impl {
     setGatherUniforms(frame, first, last);
     gatherTarget.bind();
     p.use();
-    colour.bind(kColourUnit);
-    depth.bind(kDepthUnit);
-    motion.bind(kMotionUnit);
+    ring.bind(kRingUnit);
     fromWorkingLuts.bind();
     triangle.draw();
     gl::checkError(gl, "window gather pass");
