@@ -22,6 +22,7 @@ uniform int uOtherLayer;         // mode 2: the next frame's layer
 uniform vec2 uJitter;            // the frame's sample offset
 uniform mat4 uRasterToCamera;    // the frame's raster -> camera
 uniform mat4 uCameraToOtherRaster;  // mode 1: -> the previous frame's raster; 2: the next's
+uniform mat4 uCameraToOtherCamera;  // mode 2: -> the next frame's camera space
 uniform float uTolerance;        // px
 
 layout(location = 0) out uvec4 outSample;
@@ -31,7 +32,8 @@ bool isStatic(ivec2 pixel, float depth, vec2 vector) {
   // Renderers write zero vectors where nothing is hit; the sky moves with the camera alone.
   if (uClassifyMode == 3 || isinf(depth)) return true;
   vec2 position = gl_FragCoord.xy + uJitter;
-  vec2 other = rasterOf(uCameraToOtherRaster, cameraPointOf(uRasterToCamera, position, depth));
+  vec4 point = cameraPointOf(uRasterToCamera, position, depth);
+  vec2 other = rasterOf(uCameraToOtherRaster, point);
   if (uClassifyMode == 1) return distance(position + vector, other) <= uTolerance;
   // Forward: the next frame's sample nearest to where the camera puts this one; its vector
   // points back to where it was, which is this sample's position if the point did not move.
@@ -39,8 +41,12 @@ bool isStatic(ivec2 pixel, float depth, vec2 vector) {
   if (any(lessThan(next, ivec2(0))) || any(greaterThanEqual(next, textureSize(uRing, 0).xy))) {
     return true;  // it leaves the frame: nothing to check against; static is the common case
   }
-  vec2 back = ringMotion(texelFetch(uRing, ivec3(next, uOtherLayer), 0));
-  return distance(other + back, position) <= uTolerance;
+  uvec4 nextTexel = texelFetch(uRing, ivec3(next, uOtherLayer), 0);
+  // Only the same surface can say: where the next frame sees something else there (a wire
+  // passing in front by parallax), its vector is that thing's; static is the common case.
+  float expected = (uCameraToOtherCamera * point).z;
+  if (abs(abs(ringDepth(nextTexel)) - expected) > 0.05 * expected) return true;
+  return distance(other + ringMotion(nextTexel), position) <= uTolerance;
 }
 
 void main() {

@@ -28,6 +28,9 @@
 #include "window_weights.glsl"
 
 #define MAX_SOURCES 32
+#ifndef CHAINS
+#define CHAINS 1  // 0: no frame of the window has moving samples; the chains' code is left out
+#endif            // (llvmpipe would run it, masked, for every pixel)
 
 uniform usampler2DArray uRing;  // each frame's jittered samples (window_ring.glsl)
 
@@ -71,7 +74,13 @@ float gWeight;
 float gSourceWeight;
 vec4 gSourceSum;
 float gSourceLumaSquares;
-float gCandidates, gHidden, gDisagreeing;  // diagnostics: candidates, hidden, weight left out
+float gCandidates, gHidden, gDisagreeing;
+// The current source's uniforms, read once: indexing uniform arrays by a loop variable costs a
+// load per lane on llvmpipe each time.
+mat4 gToTargetAlong, gToTargetOffset;
+vec4 gToTargetDepthAlong, gToTargetDepthOffset;
+vec2 gSourceJitter;
+int gSourceLayer;  // diagnostics: candidates, hidden, weight left out
 
 bool onScreen(ivec2 n) { return all(greaterThanEqual(n, ivec2(0))) && all(lessThan(n, gSize)); }
 
@@ -98,36 +107,35 @@ bool inBlock(ivec2 n, ivec2 corner) {
   return all(greaterThanEqual(n, corner)) && all(lessThanEqual(n, corner + 1));
 }
 
-// The static samples of source k in the 2x2 block at `corner` (skipping the first `skips` of
-// the blocks already taken), carried to t by the cameras.
-void addStaticBlock(int k, ivec2 corner, int skips, ivec2 skip0, ivec2 skip1,
-                    float frameWeight) {
-  int layer = uSourceLayer[k];
-  vec2 first = vec2(corner) + 0.5 + uSourceJitter[k];
+// The static samples of source k in the 2x2 block at `corner` (with `skip`, those of block
+// `taken` left out: they were gathered already), carried to t by the cameras.
+void addStaticBlock(int k, ivec2 corner, bool skip, ivec2 taken, float frameWeight) {
+  int layer = gSourceLayer;
+  vec2 first = vec2(corner) + 0.5 + gSourceJitter;
   // Carried positions are affine in the sample position: one product per block, columns after.
-  vec4 along = uToTargetAlong[k] * vec4(first, 1.0, 0.0);
-  vec4 offset = uToTargetOffset[k] * vec4(first, 1.0, 1.0);
-  float depthAlong = dot(uToTargetDepthAlong[k], vec4(first, 1.0, 0.0));
-  float depthOffset = dot(uToTargetDepthOffset[k], vec4(first, 1.0, 1.0));
+  vec4 along = gToTargetAlong * vec4(first, 1.0, 0.0);
+  vec4 offset = gToTargetOffset * vec4(first, 1.0, 1.0);
+  float depthAlong = dot(gToTargetDepthAlong, vec4(first, 1.0, 0.0));
+  float depthOffset = dot(gToTargetDepthOffset, vec4(first, 1.0, 1.0));
   for (int i = 0; i < 4; ++i) {
     ivec2 step = ivec2(i & 1, i >> 1);
     ivec2 n = corner + step;
     if (!onScreen(n)) continue;
-    if ((skips > 0 && inBlock(n, skip0)) || (skips > 1 && inBlock(n, skip1))) continue;
+    if (skip && inBlock(n, taken)) continue;
     RingSample entry = ringSample(n, layer);
     float depth = entry.depth;
     if (depth < 0.0) continue;  // moving samples are the chains'
     vec2 s = vec2(step);
-    vec4 a = along + s.x * uToTargetAlong[k][0] + s.y * uToTargetAlong[k][1];
-    vec4 h = isinf(depth) ? a : depth * a + offset + s.x * uToTargetOffset[k][0] +
-                                    s.y * uToTargetOffset[k][1];
+    vec4 a = along + s.x * gToTargetAlong[0] + s.y * gToTargetAlong[1];
+    vec4 h = isinf(depth) ? a : depth * a + offset + s.x * gToTargetOffset[0] +
+                                    s.y * gToTargetOffset[1];
     float weight = spatialWeight(h.xy / h.w - gPosition, uSigma);
     if (weight < 1e-3) continue;
     gCandidates += 1.0;
     float carriedDepth = depth;
     if (!isinf(depth)) {
-      carriedDepth = depth * (depthAlong + dot(s, uToTargetDepthAlong[k].xy)) + depthOffset +
-                     dot(s, uToTargetDepthOffset[k].xy);
+      carriedDepth = depth * (depthAlong + dot(s, gToTargetDepthAlong.xy)) + depthOffset +
+                     dot(s, gToTargetDepthOffset.xy);
     }
     if (hiddenBehind(carriedDepth, gFarthest, uDepthTolerance)) {
       gHidden += 1.0;
@@ -146,14 +154,14 @@ void addStaticBlock(int k, ivec2 corner, int skips, ivec2 skip0, ivec2 skip1,
 
 // The moving samples of source k in the 2x2 block around the chained point.
 void addMovingBlock(int k, vec2 chained) {
-  int layer = uSourceLayer[k];
-  ivec2 corner = cornerTexel(chained, uSourceJitter[k]);
+  int layer = gSourceLayer;
+  ivec2 corner = cornerTexel(chained, gSourceJitter);
   for (int i = 0; i < 4; ++i) {
     ivec2 n = corner + ivec2(i & 1, i >> 1);
     if (!onScreen(n)) continue;
     RingSample entry = ringSample(n, layer);
     if (entry.depth >= 0.0) continue;  // static samples are the cameras'
-    float weight = spatialWeight(vec2(n) + 0.5 + uSourceJitter[k] - chained, uSigma);
+    float weight = spatialWeight(vec2(n) + 0.5 + gSourceJitter - chained, uSigma);
     if (weight < 1e-3) continue;
     gCandidates += 1.0;
     addSourceSample(entry.colour, weight);
@@ -230,6 +238,7 @@ void main() {
   float nearDepth = isinf(gNearest) ? gNearest : nearSum / nearCount;
   float farDepth = farCount > 0.0 ? farSum / farCount : gFarthest;
 
+#if CHAINS
   // Chains of the pixel's moving surface: where it is in the frame behind (t-1, t-2, ...) and
   // ahead (t+1, ...) of the one processed last.
   vec2 behind = gPosition + startMotion;  // in t-1
@@ -237,6 +246,7 @@ void main() {
   vec2 velocity = -startMotion;           // first guess of each step ahead
   bool behindAlive = anyMoving;
   bool aheadAlive = anyMoving;
+#endif
 
   // The luma variance within frames (texture and aliasing inside the footprint, not change
   // between frames), pooled over t's own samples and each source weighed so far: the noise a
@@ -246,33 +256,39 @@ void main() {
   float withinWeight = ownWeight;
 
   for (int k = 0; k < uSourceCount; ++k) {
-    int layer = uSourceLayer[k];
-    vec2 jitter = uSourceJitter[k];
-    float frameWeight = temporalWeight(uSourceOffset[k], uFalloff);
+    gSourceLayer = uSourceLayer[k];
+    gSourceJitter = uSourceJitter[k];
+    gToTargetAlong = uToTargetAlong[k];
+    gToTargetOffset = uToTargetOffset[k];
+    gToTargetDepthAlong = uToTargetDepthAlong[k];
+    gToTargetDepthOffset = uToTargetDepthOffset[k];
+    mat4 fromTargetAlong = uFromTargetAlong[k];
+    mat4 fromTargetOffset = uFromTargetOffset[k];
+    int offsetFrames = uSourceOffset[k];
+    int layer = gSourceLayer;
+    vec2 jitter = gSourceJitter;
+    float frameWeight = temporalWeight(offsetFrames, uFalloff);
     gSourceWeight = 0.0;
     gSourceSum = vec4(0.0);
     gSourceLumaSquares = 0.0;
     if (uSourceHasCamera[k] != 0 && uTargetHasCamera) {
-      vec4 nearSource = carried(uFromTargetAlong[k], uFromTargetOffset[k], gPosition, nearDepth);
+      vec4 nearSource = carried(fromTargetAlong, fromTargetOffset, gPosition, nearDepth);
       ivec2 first = cornerTexel(nearSource.xy / nearSource.w, jitter);
-      ivec2 second = first;
-      int blocks = 1;
-      if (gThinDepth < nearDepth * (1.0 - split)) {
-        vec4 thinSource =
-            carried(uFromTargetAlong[k], uFromTargetOffset[k], gPosition, gThinDepth);
-        second = cornerTexel(thinSource.xy / thinSource.w, jitter);
-        blocks = 2;
-      }
-      addStaticBlock(k, first, 0, first, first, frameWeight);
-      if (blocks == 2) addStaticBlock(k, second, 1, first, first, frameWeight);
-      if (twoSurfaces) {
-        vec4 farSource = carried(uFromTargetAlong[k], uFromTargetOffset[k], gPosition, farDepth);
-        addStaticBlock(k, cornerTexel(farSource.xy / farSource.w, jitter), blocks, first,
-                       second, frameWeight);
+      addStaticBlock(k, first, false, first, frameWeight);
+      // The second surface: the 3x3's far one, else a thin feature found in nearer frames.
+      // llvmpipe runs both sides of a branch for a group of pixels, so there is one block of
+      // this kind, not one for each.
+      bool thin = gThinDepth < nearDepth * (1.0 - split);
+      if (twoSurfaces || thin) {
+        vec4 secondSource = carried(fromTargetAlong, fromTargetOffset, gPosition,
+                                    twoSurfaces ? farDepth : gThinDepth);
+        addStaticBlock(k, cornerTexel(secondSource.xy / secondSource.w, jitter), true, first,
+                       frameWeight);
       }
     }
 
-    bool behindStep = uSourceOffset[k] < 0;
+#if CHAINS
+    bool behindStep = offsetFrames < 0;
     bool chainAlive = behindStep ? behindAlive : aheadAlive;
     if (chainAlive) {
     vec2 chained;
@@ -304,6 +320,8 @@ void main() {
       }
     }
     }
+
+#endif
 
     // The source weighed whole: how well its samples' mean agrees with t's own.
     if (gSourceWeight > 0.0) {

@@ -15,11 +15,13 @@
 #include <chrono>
 #include <cstdio>
 #include <functional>
+#include <optional>
 #include <iostream>
 #include <string>
 #include <vector>
 
 #include "cli/cli_options.h"
+#include "io/camera_sidecar.h"
 #include "io/exr_writer.h"
 #include "io/frame_reader.h"
 #include "io/sequence_pattern.h"
@@ -64,7 +66,7 @@ taa::ResolveInput inputOf(const taa::io::FrameData& data) {
 }
 
 // Window mode: one window's frames read, added to the ring, and its centre resolved.
-int runWindow(const taa::SequenceJob& job, int repeat) {
+int runWindow(const taa::SequenceJob& job, int repeat, const taa::io::CameraInputs& cameras) {
   using namespace taa;
   const int size = 2 * job.resolve.window.radius + 1;
   if (int(job.frames.size()) < size) {
@@ -73,7 +75,7 @@ int runWindow(const taa::SequenceJob& job, int repeat) {
   }
   std::vector<io::FrameData> frames(static_cast<std::size_t>(size));
   const std::string read = timePerRun(size, [&](int n) {
-    frames[std::size_t(n)] = io::readFrame(job.layout, job.frames[std::size_t(n)]);
+    frames[std::size_t(n)] = io::readFrame(job.layout, job.frames[std::size_t(n)], cameras);
   });
   auto context = gl::Context::create(job.backend);
   WindowResolver resolver(*context, job.resolve);
@@ -115,11 +117,15 @@ int run(std::vector<std::string> args) {
   cli::useOcioEnvironmentUnlessGiven(cl, args);  // as taatool
   cli::resolveFrameList(cl);
   const SequenceJob& job = cl.job;
-  if (job.resolve.mode == ResolveMode::Window) return runWindow(job, repeat);
+  // Cameras as taatool takes them: the sidecar's, else the headers'.
+  std::optional<io::CameraSidecar> sidecar;
+  if (!job.cameraSidecar.empty()) sidecar = io::CameraSidecar::load(job.cameraSidecar);
+  const io::CameraInputs cameras{job.ndc, sidecar ? &*sidecar : nullptr};
+  if (job.resolve.mode == ResolveMode::Window) return runWindow(job, repeat, cameras);
   const int count = int(std::min<std::size_t>(job.frames.size(), 4));
   std::vector<io::FrameData> frames(static_cast<std::size_t>(count));
   const std::string read = timePerRun(count, [&](int n) {
-    frames[std::size_t(n)] = io::readFrame(job.layout, job.frames[std::size_t(n)]);
+    frames[std::size_t(n)] = io::readFrame(job.layout, job.frames[std::size_t(n)], cameras);
   });
 
   auto context = gl::Context::create(job.backend);

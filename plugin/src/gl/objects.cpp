@@ -378,6 +378,26 @@ void Program::setMatrix4Array(const char* name, const float* columnMajor, int co
   if (at >= 0) handle_.gl().ProgramUniformMatrix4fv(handle_.id(), at, count, GL_FALSE, columnMajor);
 }
 
+// --- AnySamplesQuery ---------------------------------------------------------------------
+
+AnySamplesQuery::AnySamplesQuery(const Functions& gl) {
+  GLuint id = 0;
+  gl.GenQueries(1, &id);
+  handle_ = Handle<QueryDeleter>(&gl, id);
+  checkError(gl, "creating a query");
+}
+
+void AnySamplesQuery::begin() const { handle_.gl().BeginQuery(GL_ANY_SAMPLES_PASSED, handle_.id()); }
+
+bool AnySamplesQuery::endAndRead() const {
+  const Functions& gl = handle_.gl();
+  gl.EndQuery(GL_ANY_SAMPLES_PASSED);
+  GLuint passed = 0;
+  gl.GetQueryObjectuiv(handle_.id(), GL_QUERY_RESULT, &passed);
+  checkError(gl, "reading a query");
+  return passed != 0;
+}
+
 // --- FullscreenTriangle ------------------------------------------------------------------
 
 FullscreenTriangle::FullscreenTriangle(const Functions& gl) {

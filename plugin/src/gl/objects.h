@@ -52,6 +52,9 @@ struct FramebufferDeleter {
 struct ProgramDeleter {
   void operator()(const Functions& gl, GLuint id) const { gl.DeleteProgram(id); }
 };
+struct QueryDeleter {
+  void operator()(const Functions& gl, GLuint id) const { gl.DeleteQueries(1, &id); }
+};
 struct VertexArrayDeleter {
   void operator()(const Functions& gl, GLuint id) const { gl.DeleteVertexArrays(1, &id); }
 };
@@ -206,6 +209,19 @@ class FullscreenTriangle {
 
  private:
   Handle<VertexArrayDeleter> vao_;
+};
+
+// An occlusion query: whether any fragment passed while it was active (GL_ANY_SAMPLES_PASSED).
+class AnySamplesQuery {
+ public:
+  AnySamplesQuery() = default;
+  explicit AnySamplesQuery(const Functions& gl);
+  void begin() const;
+  // Ends the query and waits for its answer.
+  bool endAndRead() const;
+
+ private:
+  Handle<QueryDeleter> handle_;
 };
 
 // Throws taa::Error naming `what` if glGetError reports an error (checks cost little here:
