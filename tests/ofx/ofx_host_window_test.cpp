@@ -15,7 +15,7 @@ namespace {
 constexpr int kRadius = 2;
 const char* const kWindowArguments = "--mode window --window 2";
 
-class OfxWindowTest : public OfxHostTest {
+class OfxHostWindowTest : public OfxHostTest {
  protected:
   // taatool --mode window --window 2 (plus `extra`) on the clip's files.
   static Image expectedWindow(int frame, const std::string& folder = "taatool-window",
@@ -39,7 +39,7 @@ class OfxWindowTest : public OfxHostTest {
   }
 };
 
-TEST_F(OfxWindowTest, ParametersHaveTheLibrarysDefaults) {
+TEST_F(OfxHostWindowTest, ParametersHaveTheLibrarysDefaults) {
   auto effect = instance();
   const auto& params = contextDescriptor_.params;
   const WindowOptions defaults;
@@ -66,7 +66,7 @@ TEST_F(OfxWindowTest, ParametersHaveTheLibrarysDefaults) {
 
 // History needs every frame before t (1), window mode none (0); the descriptor declares the
 // default mode's value.
-TEST_F(OfxWindowTest, SequentialRenderFollowsTheMode) {
+TEST_F(OfxHostWindowTest, SequentialRenderFollowsTheMode) {
   auto effect = instance();
   EXPECT_EQ(descriptor_.props.getInt(kOfxImageEffectInstancePropSequentialRender), 1);
   EXPECT_EQ(effect->props.getInt(kOfxImageEffectInstancePropSequentialRender), 1);
@@ -81,7 +81,7 @@ TEST_F(OfxWindowTest, SequentialRenderFollowsTheMode) {
   destroy(effect);
 }
 
-TEST_F(OfxWindowTest, FramesNeededAreTheWindowInsideTheClip) {
+TEST_F(OfxHostWindowTest, FramesNeededAreTheWindowInsideTheClip) {
   auto effect = instance();
   setWindowMode(*effect);
   const std::vector<std::pair<double, std::pair<double, double>>> cases = {
@@ -102,7 +102,7 @@ TEST_F(OfxWindowTest, FramesNeededAreTheWindowInsideTheClip) {
   destroy(effect);
 }
 
-TEST_F(OfxWindowTest, AnyRenderOrderGivesTaatoolsFrames) {
+TEST_F(OfxHostWindowTest, AnyRenderOrderGivesTaatoolsFrames) {
   auto effect = instance();
   setWindowMode(*effect);
   // The comparison can fail: the window's frame is not the history's.
@@ -124,7 +124,7 @@ TEST_F(OfxWindowTest, AnyRenderOrderGivesTaatoolsFrames) {
 // The ring stays between renders on a thread: a frame next to the last one fetches (and
 // pushes) the one frame its window lacks; the same frame again fetches nothing. A new setting
 // or purge caches starts from an empty ring.
-TEST_F(OfxWindowTest, TheNextFrameFetchesOneFrame) {
+TEST_F(OfxHostWindowTest, TheNextFrameFetchesOneFrame) {
   auto effect = instance();
   setWindowMode(*effect);
   const HostClip& source = effect->clips.at("Source");
@@ -156,7 +156,7 @@ TEST_F(OfxWindowTest, TheNextFrameFetchesOneFrame) {
 }
 
 // A render at scale 0.5 scales motion and jitter as taatool's --motion-scale and --jitter-scale.
-TEST_F(OfxWindowTest, RenderScaleScalesMotionAndJitterLikeTaatool) {
+TEST_F(OfxHostWindowTest, RenderScaleScalesMotionAndJitterLikeTaatool) {
   auto effect = instance();
   setWindowMode(*effect);
   const auto halfScale = [](int f) {
@@ -172,7 +172,7 @@ TEST_F(OfxWindowTest, RenderScaleScalesMotionAndJitterLikeTaatool) {
   destroy(effect);
 }
 
-TEST_F(OfxWindowTest, RenderThreadsKeepTheirOwnRing) {
+TEST_F(OfxHostWindowTest, RenderThreadsKeepTheirOwnRing) {
   auto effect = instance();
   setWindowMode(*effect);
   std::vector<Image> forward(kLast + 1), backward(kLast + 1);
@@ -192,7 +192,7 @@ TEST_F(OfxWindowTest, RenderThreadsKeepTheirOwnRing) {
 }
 
 // Switching modes on an instance that has rendered: each mode's frames are still taatool's.
-TEST_F(OfxWindowTest, SwitchingModesKeepsBothExact) {
+TEST_F(OfxHostWindowTest, SwitchingModesKeepsBothExact) {
   auto effect = instance();
   for (int f = kFirst; f <= 3; ++f) render(*effect, f);
   setWindowMode(*effect);
