@@ -99,12 +99,13 @@ class Node {
       status = taa_node_set_float(node_, name.c_str(), value.cast<float>());
     }
     check(status);
+    // push returns the resolved frame in history mode, nothing in window mode.
+    if (name == "mode") windowMode_ = value.cast<std::string>() == "window";
   }
 
-  py::array_t<float> push(const py::handle& color, const py::handle& depth,
-                          const py::handle& motion, int frame, const py::handle& jitter,
-                          bool yUp, const py::handle& worldToCamera,
-                          const py::handle& worldToNdc) {
+  py::object push(const py::handle& color, const py::handle& depth, const py::handle& motion,
+                  int frame, const py::handle& jitter, bool yUp, const py::handle& worldToCamera,
+                  const py::handle& worldToNdc) {
     ArrayBuffer colorBuffer = asBuffer(color, "color", 3, 4);
     std::optional<ArrayBuffer> depthBuffer, motionBuffer;
     if (!depth.is_none()) depthBuffer = asBuffer(depth, "depth", 1, 1);
@@ -133,23 +134,41 @@ class Node {
                                                      "world_to_ndc")).data();
 
     const int height = colorBuffer.buffer.height, width = colorBuffer.buffer.width;
-    py::array_t<float> output({height, width, 4});
-    taa_buffer out{};
-    out.data = output.mutable_data();
-    out.width = width;
-    out.height = height;
-    out.channels = 4;
-    out.type = TAA_PIXEL_FLOAT;
-    out.y_up = yUp ? 1 : 0;
     taa_status status;
+    if (windowMode_) {
+      {
+        py::gil_scoped_release release;
+        status = taa_node_push_frame(node_, &input);
+      }
+      check(status);
+      frameShape_ = {height, width};  // the ring holds frames of one size: this one's
+      return py::none();
+    }
+    py::array_t<float> output({height, width, 4});
+    taa_buffer out = outputBuffer(output, yUp);
     {
       py::gil_scoped_release release;
       status = taa_node_push_frame(node_, &input);
       if (status == TAA_OK) status = taa_node_read_output(node_, &out);
     }
     check(status);
+    return std::move(output);
+  }
+
+  py::array_t<float> resolve(int frame, bool yUp) {
+    py::array_t<float> output({frameShape_.first, frameShape_.second, 4});
+    taa_buffer out = outputBuffer(output, yUp);
+    taa_status status;
+    {
+      py::gil_scoped_release release;
+      status = taa_node_resolve_frame(node_, frame);
+      if (status == TAA_OK) status = taa_node_read_output(node_, &out);
+    }
+    check(status);
     return output;
   }
+
+  void drop(int frame) { check(taa_node_drop_frame(node_, frame)); }
 
   void reset() { check(taa_node_reset_history(node_)); }
 
@@ -161,7 +180,20 @@ class Node {
     throw PythonError(message);
   }
 
+  static taa_buffer outputBuffer(py::array_t<float>& output, bool yUp) {
+    taa_buffer out{};
+    out.data = output.mutable_data();
+    out.height = int(output.shape(0));
+    out.width = int(output.shape(1));
+    out.channels = 4;
+    out.type = TAA_PIXEL_FLOAT;
+    out.y_up = yUp ? 1 : 0;
+    return out;
+  }
+
   taa_node* node_ = nullptr;
+  bool windowMode_ = false;
+  std::pair<int, int> frameShape_{0, 0};  // window mode: height, width of the pushed frames
 };
 
 }  // namespace
@@ -172,6 +204,8 @@ void registerNode(py::module_& module) {
 Node(gl="auto", **parameters): parameters by taatool's option names with '_' for '-' (taa.h;
 `taatool --list-options`), e.g. blend=0.1, jitter="none", jitter_offset=-1000, rectify="clip",
 motion_y="up", motion_to="next", motion_scale=0.5, depth_nohit=1e9, reset_on_gap=1.
+mode="window", window=K: push() puts frames into a ring of 2K+1 and returns None; resolve(t)
+rebuilds frame t from the pushed frames within K of it (taatool --mode window), in any order.
 One thread at a time per node; different nodes may run in parallel threads.)doc")
       .def(py::init<const std::string&, const py::kwargs&>(), py::arg("gl") = "auto")
       .def("set", &Node::set, py::arg("name"), py::arg("value"),
@@ -181,12 +215,24 @@ One thread at a time per node; different nodes may run in parallel threads.)doc"
            py::arg("y_up") = false, py::arg("world_to_camera") = py::none(),
            py::arg("world_to_ndc") = py::none(),
            R"doc(Resolves one frame and returns RGBA float32 of shape (height, width, 4).
+In window mode, puts the frame into the ring instead and returns None (see resolve).
 
 color: (H, W, 3|4) float16/float32 (others are converted), premultiplied; depth: (H, W) or
 (H, W, 1); motion: (H, W, 2) in pixels, converted by the motion_* parameters. frame: the
-frame number (Halton jitter index; a gap resets history). jitter: (x, y) in pixels, y down,
-instead of Halton. y_up: row 0 of every array, output included, is the bottom row.)doc")
-      .def("reset", &Node::reset, "Forgets history: the next frame stands alone (a cut).");
+frame number (Halton jitter index; a gap resets history, or ends a window). jitter: (x, y) in
+pixels, y down, instead of Halton. y_up: row 0 of every array, output included, is the bottom
+row. world_to_camera, world_to_ndc: 16 values each, row-major as in EXR headers.)doc")
+      .def("resolve", &Node::resolve, py::arg("frame"), py::arg("y_up") = false,
+           R"doc(Window mode: resolves `frame` from the pushed frames within K of it (consecutive,
+in its shot) and returns RGBA float32 of shape (height, width, 4). Push every existing frame
+of the window first: a frame that was evicted from the full ring (the farthest from the one
+pushed), dropped or removed by a parameter change raises taa.Error naming it.)doc")
+      .def("drop", &Node::drop, py::arg("frame"),
+           "Window mode: takes a frame out of the ring (windows that need it fail until it is "
+           "pushed again).")
+      .def("reset", &Node::reset,
+           "Forgets history: the next frame stands alone (a cut). Window mode: the next pushed "
+           "frame starts a new shot.");
 }
 
 }  // namespace taa::python

@@ -14,6 +14,8 @@
  *   taa_node_set_float(node, "blend", 0.1f);
  *   for each frame: fill a taa_frame (taa_frame_init), taa_node_push_frame, taa_node_read_output
  *   taa_node_destroy(node);
+ * In window mode (below): push the frames, then taa_node_resolve_frame and taa_node_read_output
+ * for each frame whose window is in.
  *
  * Conventions (the same as taatool's; see docs/ARCHITECTURE.md):
  * - Color is RGBA (3 channels read A = 1), premultiplied. NaN/Inf become 0.
@@ -23,6 +25,29 @@
  *   "motion-scale" parameters exactly as taatool's flags of the same names.
  * - A buffer's row order (taa_buffer.y_up) only says how rows are laid out in memory; it never
  *   changes the meaning of vector values. Jitter is always in pixels, x right, y down.
+ *
+ * Window mode (parameter "mode" = "window", "window" = K): frame t is rebuilt from the raw
+ * samples of frames t-K..t+K (taatool --mode window --window K). taa_node_push_frame then only
+ * puts the frame into the node's ring of 2K+1 frames on the GPU (nothing is resolved), and
+ * taa_node_resolve_frame(node, t) resolves t; taa_node_read_output reads that result.
+ * - Frames may be pushed and resolved in any order; every result depends only on its window's
+ *   frames and the parameters, so it is taatool's frame bit for bit.
+ * - The window of t is what taatool's would be if the frames pushed so far were the sequence's
+ *   files: the consecutively numbered frames within K of t, not crossing a shot boundary.
+ *   taa_node_reset_history marks the next pushed frame as the first of a new shot. The node
+ *   cannot know of frames it was never given: push every existing frame within K of t before
+ *   resolving t (a frame never pushed ends the window, as a missing file ends taatool's).
+ * - Every frame of the window must still be in the ring: otherwise taa_node_resolve_frame
+ *   returns TAA_ERROR_MISSING_FRAME, naming the frame and why it is gone (never pushed,
+ *   evicted, dropped, removed by a parameter change). Push it again and retry.
+ * - Pushing a frame number the ring holds replaces that frame. Pushing into a full ring evicts
+ *   the frame farthest in number from the new one (of two as far, the earlier one);
+ *   taa_node_drop_frame takes a frame out explicitly (to keep an upcoming window whole).
+ * - All frames in the ring have one size; a frame of another size must start a shot (it then
+ *   empties the ring). Setting a resolve parameter to a new value empties the ring (its frames
+ *   are stored in the working space the parameters choose); the input conventions
+ *   ("motion-y", ...) and "output-type" do not. "reset-on-gap" does not apply: a gap always
+ *   ends a window. Switching "mode" frees the other mode's history or ring.
  *
  * Threads: a node may be used from any thread, one call at a time. A call made while another
  * thread is inside a call on the same node returns TAA_ERROR_BUSY at once (the message goes to
@@ -50,7 +75,8 @@ typedef enum taa_status {
   TAA_ERROR_NO_OUTPUT = 4,         /* taa_node_read_output before any frame was pushed */
   TAA_ERROR_BUSY = 5,              /* another thread is inside a call on this node */
   TAA_ERROR_GL = 6,                /* no OpenGL context could be made, or GL failed */
-  TAA_ERROR_INTERNAL = 7           /* anything else; the message says what */
+  TAA_ERROR_INTERNAL = 7,          /* anything else; the message says what */
+  TAA_ERROR_MISSING_FRAME = 8      /* window mode: a frame the resolve needs is not in the ring */
 } taa_status;
 
 typedef enum taa_pixel_type { TAA_PIXEL_HALF = 1, TAA_PIXEL_FLOAT = 2 } taa_pixel_type;
@@ -121,37 +147,51 @@ TAA_API const char* taa_node_last_error(const taa_node* node);
 
 /* Parameters by name: taatool's option names without "--" ('_' may stand for '-').
  * - The resolve options, listed by `taatool --list-options` (e.g. "blend", "jitter",
- *   "jitter-offset", "rectify", "motion-dilation", "bracket"), take any of the three setters:
- *   the value is given to the option as taatool's text (ints as decimals, floats exactly).
+ *   "jitter-offset", "rectify", "motion-dilation", "bracket", "mode", "window",
+ *   "window-sigma"), take any of the three setters: the value is given to the option as
+ *   taatool's text (ints as decimals, floats exactly).
  *   The tonemap bracket's OCIO config is taa's shipped one unless "ocio-config" names a file,
  *   or "$OCIO" for the config that variable names: $OCIO is never read otherwise.
  * - The node's input conventions are typed: "motion-y" down|up, "motion-to" previous|next
  *   (strings); "motion-scale", "depth-nohit" (floats); "reset-on-gap" 0/1 (int, default 1:
- *   history restarts when a frame is not the previous one + 1, as taatool does); "ndc"
- *   zero-one-y-down|minus-one-one-y-up (string: what world_to_ndc maps to); "output-type"
- *   float|half (string, default float: the type the result is read back from the GPU in;
- *   half suits half output buffers: half the read-back, no conversion, the same values a
- *   float read-back narrowed gives).
+ *   in history mode, history restarts when a frame is not the previous one + 1, as taatool
+ *   does); "ndc" zero-one-y-down|minus-one-one-y-up (string: what world_to_ndc maps to);
+ *   "output-type" float|half (string, default float: the type the result is read back from
+ *   the GPU in; half suits half output buffers: half the read-back, no conversion, the same
+ *   values a float read-back narrowed gives).
  * An unknown name gives TAA_ERROR_UNKNOWN_PARAMETER, a typed parameter set with another type
  * TAA_ERROR_WRONG_TYPE, a value out of range TAA_ERROR_INVALID_ARGUMENT; the message names the
- * parameter. Changes apply from the next pushed frame. */
+ * parameter. Changes apply from the next pushed frame (window mode: the next push or resolve). */
 TAA_API taa_status taa_node_set_int(taa_node* node, const char* name, int value);
 TAA_API taa_status taa_node_set_float(taa_node* node, const char* name, float value);
 TAA_API taa_status taa_node_set_string(taa_node* node, const char* name, const char* value);
 
-/* Resolves one frame. All buffers must have the same width and height. */
+/* History mode: resolves one frame. Window mode: puts the frame into the ring (evicting the
+ * frame farthest from it when the ring is full, replacing a frame of the same number) and
+ * resolves nothing. All buffers must have the same width and height. */
 TAA_API taa_status taa_node_push_frame(taa_node* node, const taa_frame* frame);
+
+/* Window mode: resolves `frame` from its window of pushed frames (see "Window mode" above).
+ * TAA_ERROR_MISSING_FRAME when the frame or one of its window is not in the ring (the message
+ * says which and why); TAA_ERROR_INVALID_ARGUMENT in history mode. */
+TAA_API taa_status taa_node_resolve_frame(taa_node* node, int frame);
+
+/* Window mode: takes `frame` out of the ring (nothing when the ring does not hold it). It stays
+ * known as pushed, so a window that needs it fails until it is pushed again.
+ * TAA_ERROR_INVALID_ARGUMENT in history mode. */
+TAA_API taa_status taa_node_drop_frame(taa_node* node, int frame);
 
 /* Copies the last resolved frame into `output` (3 or 4 channels, the frame's size). */
 TAA_API taa_status taa_node_read_output(taa_node* node, const taa_buffer* output);
 
-/* The camera matrices given with the last pushed frame (16 floats each, row-major). Either
- * pointer may be NULL; a matrix the frame did not carry comes back as zeros. Returns
- * TAA_ERROR_NO_OUTPUT before the first frame. */
+/* The camera matrices given with the last pushed frame (window mode: with the last resolved
+ * frame), 16 floats each, row-major. Either pointer may be NULL; a matrix the frame did not
+ * carry comes back as zeros. Returns TAA_ERROR_NO_OUTPUT before the first frame. */
 TAA_API taa_status taa_node_get_camera(taa_node* node, float world_to_camera[16],
                                        float world_to_ndc[16]);
 
-/* Forgets history: the next frame is resolved on its own (a cut). */
+/* History mode: forgets history, the next frame is resolved on its own (a cut). Window mode:
+ * the next pushed frame starts a new shot (no window reaches across it). */
 TAA_API taa_status taa_node_reset_history(taa_node* node);
 
 #ifdef __cplusplus

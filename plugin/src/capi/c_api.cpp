@@ -158,6 +158,15 @@ taa_status taa_node_push_frame(taa_node* node, const taa_frame* frame) {
   });
 }
 
+taa_status taa_node_resolve_frame(taa_node* node, int frame) {
+  return guarded(node, "taa_node_resolve_frame",
+                 [&](taa::capi::Node& n) { n.resolveFrame(frame); });
+}
+
+taa_status taa_node_drop_frame(taa_node* node, int frame) {
+  return guarded(node, "taa_node_drop_frame", [&](taa::capi::Node& n) { n.dropFrame(frame); });
+}
+
 taa_status taa_node_read_output(taa_node* node, const taa_buffer* output) {
   return guarded(node, "taa_node_read_output", [&](taa::capi::Node& n) {
     if (!output) throw StatusError(TAA_ERROR_INVALID_ARGUMENT, "output buffer is NULL");

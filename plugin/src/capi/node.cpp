@@ -42,6 +42,7 @@ Node::~Node() {
   // GL objects must die with their context current.
   CurrentContext current(*context_);
   resolver_.reset();
+  window_.reset();
 }
 
 void Node::ensureContext() {
@@ -50,6 +51,15 @@ void Node::ensureContext() {
   try {
     context_ = gl::Context::create(backend_);
     context_->releaseCurrent();  // create() leaves it current; each call binds it again
+  } catch (const Error& e) {
+    throw StatusError(TAA_ERROR_GL, e.what());
+  }
+}
+
+std::unique_ptr<Node::CurrentContext> Node::bindContext() {
+  ensureContext();
+  try {
+    return std::make_unique<CurrentContext>(*context_);
   } catch (const Error& e) {
     throw StatusError(TAA_ERROR_GL, e.what());
   }
@@ -83,13 +93,42 @@ void Node::pushFrame(const taa_frame& frame) {
   if (frame.depth) depth = importDepth(*frame.depth, parameters_.depth, width, height);
   if (frame.motion) motion = importMotion(*frame.motion, parameters_.motion, width, height);
 
-  ensureContext();
-  std::optional<CurrentContext> current;
-  try {
-    current.emplace(*context_);
-  } catch (const Error& e) {
-    throw StatusError(TAA_ERROR_GL, e.what());
+  ResolveInput input;
+  input.color = &color;
+  input.depth = frame.depth ? &depth : nullptr;
+  input.motion = frame.motion ? &motion : nullptr;
+  input.jitter = frame.has_jitter ? glm::vec2(frame.jitter[0], frame.jitter[1])
+                                  : frameJitter(frame.frame, parameters_.resolve.jitter);
+  // Row-major row-vector matrices (EXR) read column-major are GLM's column-vector ones.
+  FrameCamera camera;
+  if (frame.world_to_camera && frame.world_to_ndc) {
+    camera.worldToCamera = glm::dmat4(glm::make_mat4(frame.world_to_camera));
+    camera.worldToNdc = glm::dmat4(glm::make_mat4(frame.world_to_ndc));
+    input.camera = &camera;
+    input.window.displayWidth = width;
+    input.window.displayHeight = height;
+    input.ndc = parameters_.ndc;
   }
+  auto keep = [](const float* matrix) -> std::optional<std::array<float, 16>> {
+    if (!matrix) return std::nullopt;
+    std::array<float, 16> copy;
+    std::copy(matrix, matrix + 16, copy.begin());
+    return copy;
+  };
+  const FrameMatrices matrices{keep(frame.world_to_camera), keep(frame.world_to_ndc)};
+
+  const auto current = bindContext();
+  if (windowMode()) {
+    windowFrames().push(frame.frame, input, resetRequested_, matrices);
+  } else {
+    window_.reset();  // switching modes frees the ring
+    resolveInHistory(frame.frame, input);
+    outputMatrices_ = matrices;
+  }
+  resetRequested_ = false;
+}
+
+void Node::resolveInHistory(int frame, const ResolveInput& input) {
   try {
     if (!resolver_) {
       resolver_ = std::make_unique<Resolver>(*context_, parameters_.resolve);
@@ -97,43 +136,57 @@ void Node::pushFrame(const taa_frame& frame) {
       resolver_->setOptions(parameters_.resolve);
     }
     parametersChanged_ = false;
-    const bool gap = lastFrame_ && parameters_.resetOnGap && *lastFrame_ + 1 != frame.frame;
+    const bool gap = lastFrame_ && parameters_.resetOnGap && *lastFrame_ + 1 != frame;
     if (gap || resetRequested_) resolver_->resetHistory();
-
-    ResolveInput input;
-    input.color = &color;
-    input.depth = frame.depth ? &depth : nullptr;
-    input.motion = frame.motion ? &motion : nullptr;
-    input.jitter = frame.has_jitter ? glm::vec2(frame.jitter[0], frame.jitter[1])
-                                    : frameJitter(frame.frame, parameters_.resolve.jitter);
-    // Row-major row-vector matrices (EXR) read column-major are GLM's column-vector ones.
-    FrameCamera camera;
-    if (frame.world_to_camera && frame.world_to_ndc) {
-      camera.worldToCamera = glm::dmat4(glm::make_mat4(frame.world_to_camera));
-      camera.worldToNdc = glm::dmat4(glm::make_mat4(frame.world_to_ndc));
-      input.camera = &camera;
-      input.window.displayWidth = width;
-      input.window.displayHeight = height;
-      input.ndc = parameters_.ndc;
-    }
     // The output buffer's type is only known at taa_node_read_output, so the host says which
     // read-back it wants ("output-type"): float by default, which exportColor narrows into a
     // half buffer exactly as a half read-back would have.
     output_ = resolver_->resolve(input, parameters_.outputType);
   } catch (const Error& e) {
-    throw StatusError(TAA_ERROR_INTERNAL,
-                      "frame " + std::to_string(frame.frame) + ": " + e.what());
+    throw StatusError(TAA_ERROR_INTERNAL, "frame " + std::to_string(frame) + ": " + e.what());
   }
-  resetRequested_ = false;
-  lastFrame_ = frame.frame;
-  auto keep = [](const float* matrix) -> std::optional<std::array<float, 16>> {
-    if (!matrix) return std::nullopt;
-    std::array<float, 16> copy;
-    std::copy(matrix, matrix + 16, copy.begin());
-    return copy;
-  };
-  worldToCamera_ = keep(frame.world_to_camera);
-  worldToNdc_ = keep(frame.world_to_ndc);
+  lastFrame_ = frame;
+}
+
+WindowFrames& Node::windowFrames() {
+  // Switching modes frees the history (the context is current: GL objects die with it).
+  resolver_.reset();
+  lastFrame_.reset();
+  try {
+    if (!window_) {
+      window_ = std::make_unique<WindowFrames>(*context_, parameters_.resolve);
+    } else {
+      window_->setOptions(parameters_.resolve);
+    }
+  } catch (const Error& e) {
+    throw StatusError(TAA_ERROR_INTERNAL, e.what());
+  }
+  parametersChanged_ = false;
+  return *window_;
+}
+
+void Node::requireWindowMode(const char* function) const {
+  if (!windowMode()) {
+    throw StatusError(TAA_ERROR_INVALID_ARGUMENT,
+                      std::string(function) +
+                          " needs parameter \"mode\" = \"window\" (in history mode "
+                          "taa_node_push_frame resolves each frame)");
+  }
+}
+
+void Node::resolveFrame(int frame) {
+  requireWindowMode("taa_node_resolve_frame");
+  const auto current = bindContext();
+  WindowFrames& window = windowFrames();
+  output_ = window.resolve(frame, parameters_.outputType);
+  outputMatrices_ = window.matrices(frame);
+}
+
+void Node::dropFrame(int frame) {
+  requireWindowMode("taa_node_drop_frame");
+  if (!window_) return;  // nothing pushed yet
+  const auto current = bindContext();
+  window_->drop(frame);
 }
 
 void Node::readOutput(const taa_buffer& output) const {
@@ -144,7 +197,9 @@ void Node::readOutput(const taa_buffer& output) const {
 }
 
 void Node::cameras(float* worldToCamera, float* worldToNdc) const {
-  if (!lastFrame_) throw StatusError(TAA_ERROR_NO_OUTPUT, "no frame has been resolved yet");
+  if (!outputMatrices_) {
+    throw StatusError(TAA_ERROR_NO_OUTPUT, "no frame has been resolved yet");
+  }
   auto give = [](const std::optional<std::array<float, 16>>& stored, float* out) {
     if (!out) return;
     if (stored) {
@@ -153,8 +208,8 @@ void Node::cameras(float* worldToCamera, float* worldToNdc) const {
       std::fill(out, out + 16, 0.0f);
     }
   };
-  give(worldToCamera_, worldToCamera);
-  give(worldToNdc_, worldToNdc);
+  give(outputMatrices_->worldToCamera, worldToCamera);
+  give(outputMatrices_->worldToNdc, worldToNdc);
 }
 
 }  // namespace taa::capi

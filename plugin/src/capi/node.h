@@ -1,5 +1,6 @@
-// The C++ side of a taa_node: one Resolver on its own GL context, the parameters set by name,
-// and the last output. Calls throw StatusError; c_api.cpp turns them into status codes.
+// The C++ side of a taa_node: on its own GL context, a Resolver (history mode) or the window
+// mode's ring (capi/window_frames), the parameters set by name, and the last output. Calls
+// throw StatusError; c_api.cpp turns them into status codes.
 #pragma once
 
 #include <array>
@@ -7,6 +8,7 @@
 #include <optional>
 
 #include "capi/node_parameters.h"
+#include "capi/window_frames.h"
 #include "gl/context.h"
 #include "resolve/resolver.h"
 #include "taa/taa.h"
@@ -27,9 +29,14 @@ class Node {
   void setFloat(const std::string& name, float value);
   void setString(const std::string& name, const std::string& value);
 
+  // History mode: resolves the frame. Window mode: puts it into the ring.
   void pushFrame(const taa_frame& frame);
+  // Window mode only (TAA_ERROR_INVALID_ARGUMENT otherwise).
+  void resolveFrame(int frame);
+  void dropFrame(int frame);
   void readOutput(const taa_buffer& output) const;
   void cameras(float* worldToCamera, float* worldToNdc) const;
+  // History mode: the next frame starts a new history. Window mode: it starts a new shot.
   void resetHistory() { resetRequested_ = true; }
 
  private:
@@ -38,16 +45,24 @@ class Node {
   class CurrentContext;
 
   void ensureContext();
+  // The context made and bound for one call; GL failures become TAA_ERROR_GL.
+  std::unique_ptr<CurrentContext> bindContext();
+  bool windowMode() const { return parameters_.resolve.mode == ResolveMode::Window; }
+  void requireWindowMode(const char* function) const;
+  void resolveInHistory(int frame, const ResolveInput& input);
+  // The window ring with the current parameters, made on first use (history freed).
+  WindowFrames& windowFrames();
 
   gl::Backend backend_;
   std::unique_ptr<gl::Context> context_;
   std::unique_ptr<Resolver> resolver_;
+  std::unique_ptr<WindowFrames> window_;
   NodeParameters parameters_;
   bool parametersChanged_ = false;
   bool resetRequested_ = false;
-  std::optional<int> lastFrame_;
+  std::optional<int> lastFrame_;  // history mode: the last frame resolved
   TypedImage output_;
-  std::optional<std::array<float, 16>> worldToCamera_, worldToNdc_;
+  std::optional<FrameMatrices> outputMatrices_;  // the matrices of the frame output_ is
 };
 
 }  // namespace taa::capi

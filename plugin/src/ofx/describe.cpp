@@ -39,9 +39,10 @@ OfxStatus describe(OfxImageEffectHandle descriptor) {
   s.properties->propSetString(props, kOfxImageEffectPluginPropGrouping, 0, "taa");
   s.properties->propSetString(
       props, kOfxPropPluginDescription, 0,
-      "Temporal anti-aliasing resolve of a jittered render with its depth and motion AOVs. "
-      "Frame t is resolved from the clip's first frame (see History Frames), exactly as "
-      "taatool resolves the sequence.");
+      "Temporal anti-aliasing resolve of a jittered render with its depth and motion AOVs, "
+      "exactly as taatool resolves the sequence. History mode: frame t is resolved from the "
+      "clip's first frame (see History Frames). Window mode: from frames t-K..t+K, in any "
+      "order.");
   setStrings(props, kOfxImageEffectPropSupportedContexts,
              {kOfxImageEffectContextFilter, kOfxImageEffectContextGeneral});
   setStrings(props, kOfxImageEffectPropSupportedPixelDepths, {kOfxBitDepthHalf, kOfxBitDepthFloat});

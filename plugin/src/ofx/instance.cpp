@@ -52,6 +52,7 @@ void Instance::ThreadHistory::forget() {
   if (node) taa_node_destroy(node);
   node = nullptr;
   lastFrame.reset();
+  ring.clear();
   settings.reset();
 }
 
@@ -93,8 +94,8 @@ void Instance::purgeCaches() {
   }
 }
 
-void Instance::pushFrame(ThreadHistory& history, int frame, const PluginSettings& settings,
-                         RenderScale scale) const {
+OfxRectI Instance::pushFrame(ThreadHistory& history, int frame, const PluginSettings& settings,
+                             RenderScale scale) const {
   const ClipImage color(source_, frame, kOfxImageEffectSimpleSourceClipName);
   std::optional<ClipImage> depth, motion;
   if (isConnected(depth_)) depth.emplace(depth_, frame, kDepthClip);
@@ -127,7 +128,7 @@ void Instance::pushFrame(ThreadHistory& history, int frame, const PluginSettings
   if (taa_node_push_frame(history.node, &input) != TAA_OK) {
     throw std::runtime_error(taa_node_last_error(history.node));
   }
-  history.bounds = bounds;
+  return bounds;
 }
 
 void Instance::render(OfxTime time, const OfxRectI& window, RenderScale scale) {
@@ -137,24 +138,35 @@ void Instance::render(OfxTime time, const OfxRectI& window, RenderScale scale) {
   }
   const int requested = int(std::lround(time));
   const PluginSettings settings = readSettings(effect_, time);
-  const TemporalPlan plan = planFrame(requested, settings, sourceRange(requested));
+  const FrameRange range = sourceRange(requested);
+  const TemporalPlan plan = planFrame(requested, settings, range);
   const std::shared_ptr<ThreadHistory> slot = historyOfThisThread();
   ThreadHistory& history = *slot;
   std::lock_guard<std::mutex> lock(history.mutex);
+  if (settings.mode == kModeWindow) {
+    renderWindow(history, plan, range, settings, scale);
+  } else {
+    renderHistory(history, plan, settings, scale);
+  }
+  writeOutput(history, time, window);
+}
+
+void Instance::renderHistory(ThreadHistory& history, const TemporalPlan& plan,
+                             const PluginSettings& settings, RenderScale scale) const {
   if (!history.node && taa_node_create(nullptr, &history.node) != TAA_OK) {
     throw std::runtime_error(taa_last_error());
   }
-
   const bool sameSetup = history.settings && *history.settings == settings &&
                          history.scale == scale && history.startFrame == plan.frames.first;
   if (!sameSetup) {
     history.lastFrame.reset();
+    history.ring.clear();     // another mode's frames, freed by the node with its new mode
     history.settings.reset();  // until applied
     applySettings(history.node, settings, scale);
     history.settings = settings;
     history.scale = scale;
   }
-  const int frame = plan.frames.last;
+  const int frame = plan.frame;
   const bool holdsFrame = sameSetup && history.lastFrame == frame;
   const bool continues = sameSetup && history.lastFrame && *history.lastFrame + 1 == frame;
   if (!holdsFrame) {
@@ -168,12 +180,49 @@ void Instance::render(OfxTime time, const OfxRectI& window, RenderScale scale) {
     history.lastFrame.reset();  // until every frame below is in
     for (int f = from; f <= frame; ++f) {
       if (suites().effects->abort(effect_)) throw std::runtime_error("render aborted by host");
-      pushFrame(history, f, settings, scale);
+      history.bounds = pushFrame(history, f, settings, scale);
     }
     history.startFrame = plan.frames.first;
     history.lastFrame = frame;
   }
-  writeOutput(history, time, window);
+}
+
+void Instance::renderWindow(ThreadHistory& history, const TemporalPlan& plan, FrameRange range,
+                            const PluginSettings& settings, RenderScale scale) const {
+  // The node knows every frame it was given (its windows are taatool's on those frames): a new
+  // setup or clip range starts from a new node.
+  const bool sameSetup = history.node && history.settings && *history.settings == settings &&
+                         history.scale == scale && history.range == range;
+  if (!sameSetup) {
+    history.forget();
+    if (taa_node_create(nullptr, &history.node) != TAA_OK) {
+      throw std::runtime_error(taa_last_error());
+    }
+    applySettings(history.node, settings, scale);
+    history.settings = settings;
+    history.scale = scale;
+    history.range = range;
+  }
+  // Frames the window does not need leave first, so the ring (2K+1) never has to evict.
+  for (auto it = history.ring.begin(); it != history.ring.end();) {
+    if (it->first >= plan.frames.first && it->first <= plan.frames.last) {
+      ++it;
+      continue;
+    }
+    if (taa_node_drop_frame(history.node, it->first) != TAA_OK) {
+      throw std::runtime_error(taa_node_last_error(history.node));
+    }
+    it = history.ring.erase(it);
+  }
+  for (int f = plan.frames.first; f <= plan.frames.last; ++f) {
+    if (history.ring.count(f)) continue;
+    if (suites().effects->abort(effect_)) throw std::runtime_error("render aborted by host");
+    history.ring[f] = pushFrame(history, f, settings, scale);
+  }
+  if (taa_node_resolve_frame(history.node, plan.frame) != TAA_OK) {
+    throw std::runtime_error(taa_node_last_error(history.node));
+  }
+  history.bounds = history.ring.at(plan.frame);
 }
 
 void Instance::writeOutput(const ThreadHistory& history, OfxTime time,

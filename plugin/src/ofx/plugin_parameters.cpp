@@ -14,6 +14,15 @@ namespace taa::ofx {
 namespace {
 
 // Parameter names: stable, they are saved in hosts' scripts.
+constexpr const char* kMode = "mode";
+// The Mode choice's entries, as the option registry names them.
+const char* const kModeNames[] = {"history", "window"};
+constexpr const char* kWindowRadius = "window";
+constexpr const char* kWindowSigma = "windowSigma";
+constexpr const char* kWindowFalloff = "windowFalloff";
+constexpr const char* kWindowColourTolerance = "windowColourTolerance";
+constexpr const char* kWindowStaticTolerance = "windowStaticTolerance";
+constexpr const char* kWindowReconstructionWeight = "windowReconstructionWeight";
 constexpr const char* kBlend = "blend";
 constexpr const char* kRectify = "rectify";
 // The Rectify choice's entries, as the option registry names them.
@@ -141,15 +150,47 @@ void require(taa_node* node, taa_status status) {
 
 bool PluginSettings::operator==(const PluginSettings& o) const {
   auto tie = [](const PluginSettings& s) {
-    return std::tie(s.blend, s.rectify, s.dilateMotion, s.jitter, s.jitterOffset,
-                    s.jitterPeriod, s.motionY, s.motionTo, s.motionScale, s.depthNoHit,
-                    s.historyFrames, s.ocioConfigSource, s.ocioConfigFile, s.colorspaceIn,
-                    s.bracket, s.colorspaceOut);
+    return std::tie(s.mode, s.windowRadius, s.windowSigma, s.windowFalloff,
+                    s.windowColourTolerance, s.windowStaticTolerance,
+                    s.windowReconstructionWeight, s.blend, s.rectify, s.dilateMotion, s.jitter,
+                    s.jitterOffset, s.jitterPeriod, s.motionY, s.motionTo, s.motionScale,
+                    s.depthNoHit, s.historyFrames, s.ocioConfigSource, s.ocioConfigFile,
+                    s.colorspaceIn, s.bracket, s.colorspaceOut);
   };
   return tie(*this) == tie(o);
 }
 
 void defineParameters(OfxParamSetHandle set) {
+  defineChoice(set, kMode, "Mode",
+               "History: each frame blended into the history of the frames before it (render "
+               "in order). Window: each frame rebuilt from the frames Window (K) before and "
+               "after it, independent of the others (any order) (taatool --mode).",
+               {"History", "Window"}, registryDefaultIndex("mode", kModeNames, 2));
+  const taa::WindowOptions window;
+  defineInt(set, kWindowRadius, "Window (K)",
+            "Window mode: frames used on each side of the resolved frame; 2K+1 are kept in "
+            "memory per render thread (taatool --window).",
+            window.radius, 0, 16);
+  defineDouble(set, kWindowSigma, "Window Sigma",
+               "Window mode: pixels, the Gaussian weighting a sample by its distance to the pixel "
+               "centre; smaller is sharper and noisier (taatool --window-sigma).",
+               double(window.sigma), 0.05, 4.0);
+  defineDouble(set, kWindowFalloff, "Window Falloff",
+               "Window mode: frames, weight 1/(1+(distance/falloff)^2) by distance in time; 0 "
+               "weighs every frame alike (taatool --window-falloff).",
+               double(window.falloff), 0.0, 1000.0);
+  defineDouble(set, kWindowColourTolerance, "Window Colour Tolerance",
+               "Window mode: how far outside the frame's own colour box a sample may be; 0 turns "
+               "the test off (taatool --window-colour-tolerance).",
+               double(window.colourTolerance), 0.0, 1000.0);
+  defineDouble(set, kWindowStaticTolerance, "Window Static Tolerance",
+               "Window mode: pixels within which a sample's vector must agree with the camera "
+               "for camera reprojection (taatool --window-static-tolerance).",
+               double(window.staticTolerance), 0.0, 1000.0);
+  defineDouble(set, kWindowReconstructionWeight, "Window Reconstruction Weight",
+               "Window mode: weight of the frame's own filtered reconstruction, the fallback of "
+               "pixels that gather little (taatool --window-reconstruction-weight).",
+               double(window.reconstructionWeight), 0.0, 1000.0);
   defineDouble(set, kBlend, "Blend",
                "Weight of the current frame in the exponential blend (taatool --blend).",
                double(taa::ResolveOptions{}.blend),
@@ -243,6 +284,13 @@ PluginSettings readSettings(OfxImageEffectHandle effect, OfxTime time) {
   OfxParamSetHandle set = nullptr;
   check(suites().effects->getParamSet(effect, &set), "getParamSet");
   PluginSettings s;
+  s.mode = getInt(set, kMode, time);
+  s.windowRadius = getInt(set, kWindowRadius, time);
+  s.windowSigma = getDouble(set, kWindowSigma, time);
+  s.windowFalloff = getDouble(set, kWindowFalloff, time);
+  s.windowColourTolerance = getDouble(set, kWindowColourTolerance, time);
+  s.windowStaticTolerance = getDouble(set, kWindowStaticTolerance, time);
+  s.windowReconstructionWeight = getDouble(set, kWindowReconstructionWeight, time);
   s.blend = getDouble(set, kBlend, time);
   s.rectify = getInt(set, kRectify, time);
   s.dilateMotion = getInt(set, kDilateMotion, time) != 0;
@@ -263,6 +311,19 @@ PluginSettings readSettings(OfxImageEffectHandle effect, OfxTime time) {
 }
 
 void applySettings(taa_node* node, const PluginSettings& s, RenderScale scale) {
+  if (s.mode != kModeHistory && s.mode != kModeWindow) {
+    throw std::runtime_error("mode choice out of range");
+  }
+  require(node, taa_node_set_string(node, "mode", kModeNames[s.mode]));
+  require(node, taa_node_set_int(node, "window", s.windowRadius));
+  require(node, taa_node_set_float(node, "window-sigma", float(s.windowSigma)));
+  require(node, taa_node_set_float(node, "window-falloff", float(s.windowFalloff)));
+  require(node, taa_node_set_float(node, "window-colour-tolerance",
+                                   float(s.windowColourTolerance)));
+  require(node, taa_node_set_float(node, "window-static-tolerance",
+                                   float(s.windowStaticTolerance)));
+  require(node, taa_node_set_float(node, "window-reconstruction-weight",
+                                   float(s.windowReconstructionWeight)));
   require(node, taa_node_set_float(node, "blend", float(s.blend)));
   if (s.rectify < 0 || s.rectify > 3) throw std::runtime_error("rectify choice out of range");
   require(node, taa_node_set_string(node, "rectify", kRectifyNames[s.rectify]));

@@ -1,5 +1,6 @@
 // The plugin's parameters, mirroring taatool's options that make sense in a host, and their
-// mapping onto a C ABI node. Parameters do not animate: the whole history uses one setting.
+// mapping onto a C ABI node. Parameters do not animate: the whole history (or window) uses one
+// setting.
 #pragma once
 
 #include <string>
@@ -10,7 +11,20 @@
 
 namespace taa::ofx {
 
+// The Mode choice's entries (--mode history|window).
+constexpr int kModeHistory = 0;
+constexpr int kModeWindow = 1;
+
 struct PluginSettings {
+  int mode = taa::ResolveOptions{}.mode == taa::ResolveMode::Window ? kModeWindow
+                                                                     : kModeHistory;  // --mode
+  // Window mode (--window, --window-sigma, ...); defaults are the library's.
+  int windowRadius = taa::WindowOptions{}.radius;
+  double windowSigma = taa::WindowOptions{}.sigma;
+  double windowFalloff = taa::WindowOptions{}.falloff;
+  double windowColourTolerance = taa::WindowOptions{}.colourTolerance;
+  double windowStaticTolerance = taa::WindowOptions{}.staticTolerance;
+  double windowReconstructionWeight = taa::WindowOptions{}.reconstructionWeight;
   double blend = taa::ResolveOptions{}.blend;  // --blend
   int rectify = 0;            // 0 variance clip, 1 clip, 2 clamp, 3 none (--rectify)
   bool dilateMotion = true;   // --no-dilate when false

@@ -5,6 +5,7 @@
 namespace taa::ofx {
 
 int sequentialRender(const PluginSettings& settings) {
+  if (settings.mode == kModeWindow) return 0;
   return settings.historyFrames > 0 ? 2 : 1;
 }
 
@@ -12,11 +13,17 @@ TemporalPlan planFrame(int frame, const PluginSettings& settings, FrameRange sou
   if (source.last < source.first) source.last = source.first;
   TemporalPlan plan;
   plan.sequentialRender = sequentialRender(settings);
+  plan.frame = std::clamp(frame, source.first, source.last);
+  if (settings.mode == kModeWindow) {
+    // taatool's window on the clip's frames: t-K..t+K, stopping at the clip's ends.
+    plan.frames = {std::max(source.first, plan.frame - settings.windowRadius),
+                   std::min(source.last, plan.frame + settings.windowRadius)};
+    return plan;
+  }
   // History: taatool's result for [start, t]; start is the clip's first frame, or t - N + 1.
-  const int last = std::clamp(frame, source.first, source.last);
   int first = source.first;
-  if (settings.historyFrames > 0) first = std::max(first, last - settings.historyFrames + 1);
-  plan.frames = {first, last};
+  if (settings.historyFrames > 0) first = std::max(first, plan.frame - settings.historyFrames + 1);
+  plan.frames = {first, plan.frame};
   return plan;
 }
 

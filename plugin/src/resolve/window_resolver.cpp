@@ -316,6 +316,12 @@ struct WindowResolver::Impl {
     if (found == slots.end()) return;
     freeLayers.push_back(found->second.layer);
     slots.erase(found);
+    // Its neighbours may be classified against it: a frame added later under its number (with
+    // other content, as a C ABI host may push) must not find that classification still there.
+    for (int neighbour : {frame - 1, frame + 1}) {
+      const auto it = slots.find(neighbour);
+      if (it != slots.end()) it->second.classifiedOnce = false;
+    }
   }
 
   void setGatherUniforms(const gl::Program& p, int frame, int first, int last) {

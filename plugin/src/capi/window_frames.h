@@ -1,0 +1,74 @@
+// The window mode of a C ABI node (taa.h, "Window mode"): frames pushed into the window
+// resolver's ring, resolved on request. Each window is planned as taatool's job plans it
+// (planWindows over the frames ever pushed and the shot starts), so a result is taatool's frame
+// whatever order frames came in; a frame that left the ring is remembered with the reason, so a
+// window that needs it fails with a message that says what to push again.
+#pragma once
+
+#include <array>
+#include <map>
+#include <memory>
+#include <optional>
+#include <set>
+#include <string>
+
+#include "gl/context.h"
+#include "resolve/window_resolver.h"
+#include "taa/options.h"
+#include "util/image.h"
+
+namespace taa::capi {
+
+// The camera matrices a frame was pushed with (16 floats, row-major, as the host gave them).
+struct FrameMatrices {
+  std::optional<std::array<float, 16>> worldToCamera, worldToNdc;
+};
+
+class WindowFrames {
+ public:
+  // The context must be current for every call, destructor included. Throws taa::Error when
+  // the options are unusable (e.g. a bracket the OCIO config lacks).
+  WindowFrames(gl::Context& context, const ResolveOptions& options);
+  ~WindowFrames();
+  WindowFrames(const WindowFrames&) = delete;
+  WindowFrames& operator=(const WindowFrames&) = delete;
+
+  // Other options make a new, empty ring (frames are stored in the working space the options
+  // choose); the frames known as pushed and the shot starts stay. Throws taa::Error, keeping
+  // the old ring, when the new options are unusable.
+  void setOptions(const ResolveOptions& options);
+
+  // Puts `frame` into the ring: a frame of the same number is replaced; in a full ring the
+  // frame farthest from it (the earlier of two as far) is evicted. `startsShot` marks it as
+  // the first frame of a shot; a frame of another size than the ring's must be one, and then
+  // empties the ring. Throws StatusError (a size conflict leaves the ring as it was).
+  void push(int frame, const ResolveInput& input, bool startsShot,
+            const FrameMatrices& matrices);
+  // Takes `frame` out of the ring; it stays known as pushed. Nothing when it is not held.
+  void drop(int frame);
+
+  // Resolves `frame` from its window. Throws StatusError(TAA_ERROR_MISSING_FRAME) naming the
+  // frame of the window that is not in the ring and why.
+  TypedImage resolve(int frame, SampleType outputType);
+  // The matrices `frame` was pushed with; it must be in the ring.
+  const FrameMatrices& matrices(int frame) const;
+
+ private:
+  // Takes `frame` out of the ring, remembering `why` (for a later window that needs it).
+  void remove(int frame, const std::string& why);
+  int farthestFrom(int frame) const;
+  std::string missingMessage(int missing, int frame, int first, int last) const;
+
+  gl::Context& context_;
+  ResolveOptions options_;
+  std::string optionsText_;  // every option's value: equal texts are equal options
+  std::unique_ptr<WindowResolver> resolver_;
+  std::set<int> ring_;                    // frames the resolver holds
+  std::map<int, FrameMatrices> matrices_; // of the frames in the ring
+  std::optional<std::pair<int, int>> size_;  // width, height of the ring's frames
+  std::set<int> known_;                   // every frame number ever pushed
+  std::set<int> shotStarts_;
+  std::map<int, std::string> removed_;    // known frames not in the ring: why they left
+};
+
+}  // namespace taa::capi
