@@ -72,6 +72,14 @@ void Node::pushFrame(const taa_frame& frame) {
   }
   // Convert every input before touching the resolver, so a bad buffer leaves history intact.
   // Half colour stays half: the resolver uploads it as is.
+  if (frame.has_jitter) {
+    try {
+      checkedJitter(glm::vec2(frame.jitter[0], frame.jitter[1]), "the host",
+                    {"", frame.frame, ""});
+    } catch (const Error& e) {
+      throw StatusError(TAA_ERROR_INVALID_ARGUMENT, e.what());
+    }
+  }
   const TypedImage color = importColor(*frame.color);
   const int width = color.width(), height = color.height();
   Image depth, motion;

@@ -96,7 +96,8 @@ glm::vec2 jitterOf(const SequenceJob& job, const io::FrameData& data,
                 {data.colorPath, data.frame, ""});
   }
   const float* xy = static_cast<const float*>(value->data());
-  return glm::vec2(xy[0], xy[1]);
+  return checkedJitter(glm::vec2(xy[0], xy[1]), "the header attribute " + job.jitterAttribute,
+                       {data.colorPath, data.frame, ""});
 }
 
 // "name=value; ..." for every resolve option, plus the jitter source when not the options'.
