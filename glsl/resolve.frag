@@ -200,7 +200,7 @@ PreviousDepth comparePreviousDepth(vec2 position, float expected, float toleranc
 }
 
 void writeResult(vec4 working, float samples, float historyWeight, float reason, vec2 velocity) {
-  outHistory = working;
+  outHistory = finiteWorking(working);  // NaN from a NaN camera, say, never reaches history
   outHistoryState = samples;
   outDebug = vec4(historyWeight, reason, velocity);
 #if FUSED_OUTPUT

@@ -3,6 +3,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <utility>
 
 #include "capi/buffer_conversion.h"
@@ -78,6 +79,14 @@ void Node::pushFrame(const taa_frame& frame) {
                     {"", frame.frame, ""});
     } catch (const Error& e) {
       throw StatusError(TAA_ERROR_INVALID_ARGUMENT, e.what());
+    }
+  }
+  for (const float* matrix : {frame.world_to_camera, frame.world_to_ndc}) {
+    if (matrix && !std::all_of(matrix, matrix + 16, [](float v) { return std::isfinite(v); })) {
+      throw StatusError(TAA_ERROR_INVALID_ARGUMENT,
+                        "frame " + std::to_string(frame.frame) + ": " +
+                            (matrix == frame.world_to_camera ? "world_to_camera" : "world_to_ndc") +
+                            " holds NaN or Inf");
     }
   }
   const TypedImage color = importColor(*frame.color);
