@@ -148,6 +148,16 @@ static void test_buffers(taa_node* node) {
   frame.jitter[1] = -INFINITY;
   CHECK(taa_node_push_frame(node, &frame) == TAA_ERROR_INVALID_ARGUMENT, "-Inf jitter");
 
+  /* NaN camera matrices would reproject every pixel to NaN. */
+  float nan_matrix[16] = {0};
+  nan_matrix[0] = nan_matrix[5] = nan_matrix[10] = nan_matrix[15] = 1.0f;
+  nan_matrix[12] = NAN;
+  frame = frame_with(&color, NULL, NULL);
+  frame.world_to_ndc = nan_matrix;
+  CHECK(taa_node_push_frame(node, &frame) == TAA_ERROR_INVALID_ARGUMENT, "NaN matrix");
+  CHECK(contains(taa_node_last_error(node), "world_to_ndc holds NaN or Inf"), "message: %s",
+        taa_node_last_error(node));
+
   /* After all that, a valid frame resolves and clears the message. */
   for (int i = 0; i < W * H; ++i) {
     for (int c = 0; c < 4; ++c) color_data[i * 4 + c] = 0.5f;

@@ -411,6 +411,24 @@ TEST(ReadFrameErrors, MotionWindowOriginDifferentFromColorIsAnError) {
   EXPECT_TRUE(contains(error.what(), "4x3 at (0, 0)")) << error.what();
 }
 
+// Issue 17: NaN camera matrices would reproject every pixel to NaN; the header is refused.
+TEST(ReadFrameErrors, NonFiniteHeaderMatrixIsAnError) {
+  const std::string folder = scratchFolder();
+  OIIO::ImageSpec spec = makeSpec(4, 3, {"R", "G", "B", "A"});
+  float identity[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+  spec.attribute("worldToCamera", OIIO::TypeMatrix44, identity);
+  identity[5] = kNaN;
+  spec.attribute("worldToNDC", OIIO::TypeMatrix44, identity);
+  writeImage(folder + "/c.exr", spec, std::vector<float>(4 * 3 * 4, 0.5f));
+  AovLayout layout;
+  layout.color = {folder + "/c.exr", {"R", "G", "B", "A"}};
+  const Error error = errorOf([&] { readFrame(layout, 9); });
+  EXPECT_TRUE(contains(error.what(), "the color header's worldToNDC holds NaN or Inf"))
+      << error.what();
+  EXPECT_EQ(error.context().file, folder + "/c.exr");
+  EXPECT_EQ(error.context().frame, 9);
+}
+
 TEST(ReadFrameErrors, TextFileNamedExrIsRejected) {
   const std::string folder = scratchFolder();
   taa::test::writeTextFile(folder + "/c.exr", "this is not an image\n");
