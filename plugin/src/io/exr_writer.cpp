@@ -6,6 +6,7 @@
 #include <atomic>
 #include <cctype>
 #include <cerrno>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -294,9 +295,19 @@ void validateCompression(const std::string& compression) {
       "optionally with :level for zip, zips, dwaa and dwab)";
   if (!known) throw Error("unknown EXR compression \"" + compression + "\"" + expected);
   if (colon == std::string::npos) return;
-  const bool takesLevel = name == "zip" || name == "zips" || name == "dwaa" || name == "dwab";
-  if (!takesLevel || !isNumber(compression.substr(colon + 1))) {
+  const bool zip = name == "zip" || name == "zips";
+  const bool takesLevel = zip || name == "dwaa" || name == "dwab";
+  const std::string level = compression.substr(colon + 1);
+  if (!takesLevel || !isNumber(level)) {
     throw Error("bad EXR compression level in \"" + compression + "\"" + expected);
+  }
+  // zlib knows levels 1 to 9 (0 would store uncompressed); DWA's level is a positive quality.
+  const double value = std::strtod(level.c_str(), nullptr);
+  const bool inRange = zip ? level.size() == 1 && value >= 1.0 && value <= 9.0
+                           : value > 0.0 && std::isfinite(value);
+  if (!inRange) {
+    throw Error("EXR compression level out of range in \"" + compression + "\" (" +
+                (zip ? "zip and zips take 1 to 9" : "dwaa and dwab take a level above 0") + ")");
   }
 }
 
