@@ -1,7 +1,5 @@
 #include "io/exr_writer.h"
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <atomic>
 #include <cctype>
@@ -12,6 +10,7 @@
 #include <filesystem>
 #include <system_error>
 
+#include "io/stale_temp_files.h"
 #include "taa/error.h"
 
 namespace taa::io {
@@ -98,14 +97,11 @@ std::string compressionAttribute(const std::string& compression) {
   return compression;
 }
 
-// ".<name>.taa-tmp-<pid>-<n>.exr": hidden, unique per process and call, and ending in .exr.
+// ".<name>.taa-tmp-<host>-<pid>-<n>.exr": hidden, unique per host, process and call, ending in
+// .exr; a later run removes it if this process dies before the rename (io/stale_temp_files.h).
 fs::path temporaryPathFor(const fs::path& finalPath) {
   static std::atomic<unsigned> counter{0};
-  // Shortened so that the suffix cannot push a long name past the file system's 255 bytes.
-  const std::string base = finalPath.filename().string().substr(0, 200);
-  const std::string name = "." + base + ".taa-tmp-" + std::to_string(::getpid()) + "-" +
-                           std::to_string(counter++) + ".exr";
-  return finalPath.parent_path() / name;
+  return finalPath.parent_path() / temporaryFileName(finalPath.filename().string(), counter++);
 }
 
 std::vector<std::string> colorNames(const WriteOptions& options) {
