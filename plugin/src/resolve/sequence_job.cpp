@@ -10,10 +10,12 @@
 #include "io/camera_sidecar.h"
 #include "io/frame_reader.h"
 #include "io/sequence_pattern.h"
+#include "io/stale_temp_files.h"
 #include "resolve/jitter.h"
 #include "resolve/option_registry.h"
 #include "resolve/resolver.h"
 #include "taa/error.h"
+#include "util/interruption.h"
 
 namespace taa {
 namespace {
@@ -131,6 +133,18 @@ std::vector<std::string> outputChannelNames(const SequenceJob& job) {
 
 void validateSequenceJob(const SequenceJob& job) {
   if (job.frames.empty()) throw Error("no frames to resolve", {job.layout.color.pattern});
+  for (std::size_t i = 1; i < job.frames.size(); ++i) {
+    if (job.frames[i] <= job.frames[i - 1]) {  // e.g. --frames 5-1: history needs frame - 1 first
+      throw Error("frames must ascend: " + std::to_string(job.frames[i]) + " follows " +
+                      std::to_string(job.frames[i - 1]) +
+                      " (history is built forward in time; list the frames in ascending order)",
+                  {job.layout.color.pattern, job.frames[i], ""});
+    }
+  }
+  if (job.ioThreads < 0 || job.ioThreads > kMaxIoThreads) {
+    throw Error("threads must be 0 to " + std::to_string(kMaxIoThreads) + ", got " +
+                std::to_string(job.ioThreads));
+  }
   if (job.outputPattern.empty()) throw Error("no output given (use -o PATTERN)");
   if (job.frames.size() > 1 && !io::hasFramePlaceholder(job.outputPattern)) {
     throw Error("output pattern has no frame number placeholder (#, @ or %0Nd) but " +
@@ -171,6 +185,11 @@ void validateSequenceJob(const SequenceJob& job) {
 
 void runSequenceJob(const SequenceJob& job, const JobCallbacks& callbacks) {
   validateSequenceJob(job);
+  const io::StaleTemporaries stale = io::removeStaleTemporaries(job.outputPattern);
+  if (callbacks.log) {
+    for (const auto& path : stale.removed) callbacks.log("removed a dead run's temporary " + path);
+    for (const auto& why : stale.failed) callbacks.log("cannot remove a dead run's file " + why);
+  }
   std::optional<io::CameraSidecar> sidecar;
   if (!job.cameraSidecar.empty()) sidecar = io::CameraSidecar::load(job.cameraSidecar);
   io::CameraInputs cameras{job.ndc, sidecar ? &*sidecar : nullptr};
@@ -197,7 +216,13 @@ void runSequenceJob(const SequenceJob& job, const JobCallbacks& callbacks) {
     writes.pop_front();
   };
 
+  int lastWidth = 0, lastHeight = 0;
   for (int index = 0; index < count; ++index) {
+    if (callbacks.stopRequested && callbacks.stopRequested()) {
+      while (!writes.empty()) finishOldestWrite();  // frames in flight end complete
+      throw Stopped("stopped after " + std::to_string(index) + " of " + std::to_string(count) +
+                    " frames; those are written completely and nothing partial is left");
+    }
     for (; nextRead < count && nextRead <= index + inFlight; ++nextRead) {
       const int frame = job.frames[nextRead];
       reads.push_back(std::async(policy, [&job, frame, cameras] {
@@ -216,6 +241,21 @@ void runSequenceJob(const SequenceJob& job, const JobCallbacks& callbacks) {
 
     io::FrameData data = reads.front().get();
     reads.pop_front();
+    // The resolver restarts history at a new size; say so (FrameReport::sizeChanged).
+    report.width = data.color.width();
+    report.height = data.color.height();
+    report.sizeChanged = index > 0 && (report.width != lastWidth || report.height != lastHeight);
+    report.historyReset = report.historyReset || report.sizeChanged;
+    lastWidth = report.width;
+    lastHeight = report.height;
+    report.inputPath = data.colorPath;
+    report.outputPath = io::expandFramePattern(job.outputPattern, frame);
+    report.motionPath = data.motionPath;
+    report.nonFiniteColorValues = data.nonFiniteColorValues;
+    report.nonFiniteMotionValues = data.nonFiniteMotionValues;
+    const SampleType outputType = io::outputSampleType(write, data.colorSpec);
+    report.clampedColorValues = outputType == SampleType::Half ? data.colorValuesBeyondHalf : 0;
+    if (callbacks.frameRead) callbacks.frameRead(report);
     ResolveInput input;
     input.color = &data.color;
     input.depth = data.depth.empty() ? nullptr : &data.depth;
@@ -228,16 +268,13 @@ void runSequenceJob(const SequenceJob& job, const JobCallbacks& callbacks) {
     // Read back in the type the file gets: a half output goes from GL to the encoder as is.
     TypedImage output = [&] {
       try {
-        return resolver.resolve(input, io::outputSampleType(write, spec));
+        return resolver.resolve(input, outputType);
       } catch (const Error& e) {
         throw Error(e.description(), {data.colorPath, frame, e.context().channel});
       }
     }();
 
     report.cutDetected = resolver.lastFrameWasCut();
-    report.inputPath = data.colorPath;
-    report.outputPath = io::expandFramePattern(job.outputPattern, frame);
-    report.nonFiniteColorValues = data.nonFiniteColorValues;
     spec.attribute("taa:version", TAA_VERSION_STRING);
     spec.attribute("taa:options", options);
     io::ExtraChannels extra = passthroughWithout(data.passthrough, write.rgbaNames);
