@@ -284,8 +284,12 @@ void runSequenceJob(const SequenceJob& job, const JobCallbacks& callbacks) {
     writes.emplace_back(
         std::async(policy,
                    [path = report.outputPath, output = std::move(output), spec = std::move(spec),
-                    &write, extra = std::move(extra)] {
-                     io::writeExrAtomic(path, output, spec, write, extra);
+                    &write, extra = std::move(extra), frame] {
+                     try {
+                       io::writeExrAtomic(path, output, spec, write, extra);
+                     } catch (const Error& e) {  // the writer knows the path, not the frame
+                       throw Error(e.description(), {e.context().file, frame, e.context().channel});
+                     }
                    }),
         report);
     while (int(writes.size()) > inFlight) finishOldestWrite();
