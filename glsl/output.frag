@@ -4,6 +4,8 @@
 // OpenColorIO and inserted ahead of this file. Without sharpening resolve.frag writes the output
 // itself (FUSED_OUTPUT) and this pass does not run.
 
+#include "finite_range.glsl"
+
 uniform sampler2D uResolved;  // RGBA, nearest: this frame's result, working space
 uniform float uSharpen;       // 0: off; unsharp-mask amount against the 4 neighbours
 
@@ -25,5 +27,5 @@ void main() {
     // Unsharp mask, kept within the neighbours' range so it cannot ring or go negative.
     centre = clamp(centre + uSharpen * (centre - 0.25 * sum), lo, hi);
   }
-  outColor = taaFromWorking(centre);
+  outColor = finiteOutput(taaFromWorking(centre));
 }

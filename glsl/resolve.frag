@@ -13,6 +13,7 @@
 #include "camera_reprojection.glsl"
 #include "depth_footprint.glsl"
 #include "blend_weights.glsl"
+#include "finite_range.glsl"
 
 // Variants, set by the resolver as #define lines (defaults here document the choices).
 #ifndef MOTION_DILATION
@@ -199,11 +200,11 @@ PreviousDepth comparePreviousDepth(vec2 position, float expected, float toleranc
 }
 
 void writeResult(vec4 working, float samples, float historyWeight, float reason, vec2 velocity) {
-  outHistory = working;
+  outHistory = finiteWorking(working);  // NaN from a NaN camera, say, never reaches history
   outHistoryState = samples;
   outDebug = vec4(historyWeight, reason, velocity);
 #if FUSED_OUTPUT
-  outColor = taaFromWorking(working);
+  outColor = finiteOutput(taaFromWorking(working));
 #endif
 }
 
@@ -242,6 +243,7 @@ void main() {
   // Anti-ringing: Lanczos' negative lobes overshoot at high-contrast edges (halos, negative
   // values beside bright pixels); the samples' own range bounds what the pixel can be.
   if (uAntiRinging) filtered.rgb = clamp(filtered.rgb, rgbMin, rgbMax);
+  filtered.rgb = limitOvershoot(filtered.rgb, rgbMin, rgbMax);
   vec3 filteredBox = toBoxSpace(filtered.rgb);
   filtered.a = clamp(filtered.a, alphaMin, alphaMax);
 

@@ -3,6 +3,7 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include <cstdlib>
 #include <optional>
 #include <string>
 #include <utility>
@@ -22,15 +23,51 @@ struct ArrayBuffer {
   taa_buffer buffer{};
 };
 
-// Float16 and float32 arrays are used in place when each pixel's channels are contiguous;
-// anything else is copied to float32 first. Shapes: (H, W, C), or (H, W) for one channel.
+// numpy's name of an array's element type ("float32", "<U5", "object") for messages.
+std::string dtypeName(const py::array& array) {
+  return py::str(array.dtype()).cast<std::string>();
+}
+
+// The array `object` stands for, with real numeric elements; anything numpy cannot make one of
+// (strings, bytes, objects, complex numbers) is refused with its type named. pybind11's
+// conversions return a null array instead of raising: it is checked, never dereferenced.
+py::array numericArray(const py::handle& object, const std::string& what) {
+  py::array array = py::array::ensure(object);
+  const char kind = array ? array.dtype().kind() : '?';
+  const bool numeric = kind == 'f' || kind == 'i' || kind == 'u' || kind == 'b';
+  if (!array || !numeric) {
+    const std::string type =
+        array ? dtypeName(array) : py::str(py::type::of(object)).cast<std::string>();
+    throw PythonError(what + " must be a numeric array (float16/float32, or convertible to "
+                      "float32), got " + type);
+  }
+  return array;
+}
+
+// True when a pixel's channels are packed and rows and pixels do not overlap: the C ABI reads
+// such an array where it lies (rows may run backwards, as for y_up hosts).
+bool stridesFitTheAbi(const py::array& array) {
+  const py::ssize_t item = array.itemsize(), channels = array.shape(2);
+  return array.strides(2) == item && array.strides(1) >= item * channels &&
+         std::abs(array.strides(0)) >= array.strides(1) * array.shape(1);
+}
+
+// Native-order float16 and float32 arrays are used in place when their strides fit the C ABI;
+// anything else is copied: other byte orders and element types to float32 (float16 keeps its
+// type), other layouts (transposed, columns reversed) to a C-contiguous copy. Shapes: (H, W, C),
+// or (H, W) for one channel.
 ArrayBuffer asBuffer(const py::handle& object, const char* what, int minChannels,
                      int maxChannels) {
-  py::array array = py::array::ensure(object);
-  if (!array) throw PythonError(std::string(what) + " is not an array");
+  py::array array = numericArray(object, what);
   const bool isHalf = array.dtype().kind() == 'f' && array.itemsize() == 2;
   const bool isFloat = array.dtype().kind() == 'f' && array.itemsize() == 4;
-  if (!isHalf && !isFloat) array = py::array_t<float, py::array::forcecast>::ensure(array);
+  const bool native = array.dtype().attr("isnative").cast<bool>();
+  if (isHalf && !native) {
+    array = array.attr("astype")(py::dtype("float16"));
+  } else if (!isHalf && !(isFloat && native)) {
+    array = py::array_t<float, py::array::forcecast>::ensure(array);
+    if (!array) throw PythonError(std::string(what) + " cannot be converted to float32");
+  }
   if (array.ndim() == 2 && minChannels == 1) {
     array = array.attr("reshape")(array.shape(0), array.shape(1), 1);
   }
@@ -44,8 +81,7 @@ ArrayBuffer asBuffer(const py::handle& object, const char* what, int minChannels
                       (minChannels == maxChannels ? "" : " to " + std::to_string(maxChannels)) +
                       " channels, has " + std::to_string(channels));
   }
-  // The C ABI takes any row and pixel stride but needs each pixel's channels packed.
-  if (array.strides(2) != array.itemsize() || array.strides(1) < array.itemsize() * channels) {
+  if (!stridesFitTheAbi(array)) {
     array = py::module_::import("numpy").attr("ascontiguousarray")(array);
   }
   ArrayBuffer result;
@@ -60,10 +96,16 @@ ArrayBuffer asBuffer(const py::handle& object, const char* what, int minChannels
   return result;
 }
 
-std::vector<float> matrix16(const py::handle& object, const char* what) {
-  auto values = py::array_t<float, py::array::c_style | py::array::forcecast>::ensure(object);
-  if (!values || values.size() != 16) throw PythonError(std::string(what) + " needs 16 values");
-  return std::vector<float>(values.data(), values.data() + 16);
+// `count` numbers from any array-like (list, tuple, numpy array), or taa.Error naming `what`.
+std::vector<float> numbers(const py::handle& object, std::size_t count, const char* what,
+                           const char* meaning) {
+  const py::array array = numericArray(object, what);
+  const auto values = py::array_t<float, py::array::c_style | py::array::forcecast>::ensure(array);
+  if (!values || std::size_t(values.size()) != count) {
+    throw PythonError(std::string(what) + " needs " + std::to_string(count) + " numbers" +
+                      meaning);
+  }
+  return std::vector<float>(values.data(), values.data() + count);
 }
 
 class Node {
@@ -121,17 +163,21 @@ class Node {
     input.depth = depthBuffer ? &depthBuffer->buffer : nullptr;
     input.motion = motionBuffer ? &motionBuffer->buffer : nullptr;
     if (!jitter.is_none()) {
-      const auto values = jitter.cast<std::vector<float>>();
-      if (values.size() != 2) throw PythonError("jitter needs two values (x, y), pixels, y down");
+      const std::vector<float> values =
+          numbers(jitter, 2, "jitter", " (x, y): pixels, y down");
       input.has_jitter = 1;
       input.jitter[0] = values[0];
       input.jitter[1] = values[1];
     }
     std::vector<float> w2c, w2ndc;
-    if (!worldToCamera.is_none()) input.world_to_camera = (w2c = matrix16(worldToCamera,
-                                                           "world_to_camera")).data();
-    if (!worldToNdc.is_none()) input.world_to_ndc = (w2ndc = matrix16(worldToNdc,
-                                                     "world_to_ndc")).data();
+    if (!worldToCamera.is_none()) {
+      w2c = numbers(worldToCamera, 16, "world_to_camera", " (a 4x4 matrix)");
+      input.world_to_camera = w2c.data();
+    }
+    if (!worldToNdc.is_none()) {
+      w2ndc = numbers(worldToNdc, 16, "world_to_ndc", " (a 4x4 matrix)");
+      input.world_to_ndc = w2ndc.data();
+    }
 
     const int height = colorBuffer.buffer.height, width = colorBuffer.buffer.width;
     taa_status status;

@@ -5,9 +5,11 @@
 #include <vector>
 
 #include "cli/cli_options.h"
+#include "cli/input_report.h"
 #include "python_error.h"
 #include "resolve/sequence_job.h"
 #include "taa/error.h"
+#include "util/interruption.h"
 
 namespace py = pybind11;
 
@@ -70,7 +72,10 @@ py::dict reportDict(const FrameReport& report) {
   d["input"] = report.inputPath;
   d["output"] = report.outputPath;
   d["history_reset"] = report.historyReset;
+  d["size_changed"] = report.sizeChanged;
   d["non_finite_color_values"] = report.nonFiniteColorValues;
+  d["non_finite_motion_values"] = report.nonFiniteMotionValues;
+  d["clamped_color_values"] = report.clampedColorValues;
   return d;
 }
 
@@ -80,9 +85,11 @@ struct CallbackRaised {};
 py::list resolveSequence(const std::string& color, const py::kwargs& kwargs) {
   py::object progress = py::none();
   cli::CommandLine cl;
+  std::optional<cli::InputReport> inputReport;
   try {
     cl = cli::parseCommandLine(commandLine(color, kwargs, progress));
     cli::resolveFrameList(cl);
+    inputReport.emplace(cl);
   } catch (const Error& e) {
     throw PythonError(e.what());
   }
@@ -90,9 +97,18 @@ py::list resolveSequence(const std::string& color, const py::kwargs& kwargs) {
   py::list reports;
   std::vector<FrameReport> done;
   JobCallbacks callbacks;
+  callbacks.frameRead = [&](const FrameReport& report) { inputReport->frameRead(report); };
+  // Ctrl-C (or any signal whose Python handler raises) stops the job between frames; the
+  // Python exception stays set and is raised once the frames in flight are written.
+  bool signalRaised = false;
+  callbacks.stopRequested = [&] {
+    py::gil_scoped_acquire gil;
+    signalRaised = signalRaised || PyErr_CheckSignals() != 0;
+    return signalRaised;
+  };
   callbacks.frameDone = [&](const FrameReport& report) {
     done.push_back(report);
-    if (progress.is_none()) return;
+    if (progress.is_none() || signalRaised) return;  // no Python code while an error is set
     py::gil_scoped_acquire gil;
     try {
       progress(reportDict(report));
@@ -104,10 +120,19 @@ py::list resolveSequence(const std::string& color, const py::kwargs& kwargs) {
   try {
     py::gil_scoped_release release;
     runSequenceJob(cl.job, callbacks);
+  } catch (const Stopped&) {
+    if (signalRaised) throw py::error_already_set();
+    throw;
   } catch (const Error& e) {
     throw PythonError(e.what());
   } catch (const CallbackRaised&) {
     throw py::error_already_set();
+  }
+  // What changed the result silently, as Python warnings (taatool prints them on stderr).
+  for (const std::string& warning : inputReport->warnings()) {
+    if (PyErr_WarnEx(PyExc_RuntimeWarning, warning.c_str(), 1) != 0) {
+      throw py::error_already_set();  // warnings turned into errors (-W error)
+    }
   }
   for (const FrameReport& report : done) reports.append(reportDict(report));
   return reports;
@@ -125,7 +150,11 @@ Keyword arguments are taatool's options with '-' written '_':
   motion_scale=, depth_nohit=, jitter="none", jitter_offset=, jitter_period=, blend=,
   clip=False (--no-clip), dilate=False (--no-dilate), pixel_type="float" (-d),
   compression=, gl="osmesa"; any other taatool option by its name.
+  skip_missing=True (resolve around gaps in the frames found), strict=True (what would change
+  the result silently is an error instead: NaN/Inf set to 0, values clamped, a size change).
 progress: a callable given each frame's dict after the frame is written.
+What changed the result silently is reported as RuntimeWarning with counts, as taatool's
+warnings. Ctrl-C stops between frames: frames written are complete, KeyboardInterrupt follows.
 Raises taa.Error with taatool's message (file, frame, channel) on any failure.)doc");
 }
 

@@ -5,26 +5,43 @@
         -o resolved.####.exr --shot 1001-1100 --chunk 1041-1060 [--preroll 16] \\
         [--option blend=0.1 --option preset=cycles ...]
 
-- Frames of the chunk whose output already exists (and opens as an image) are skipped, so a
-  re-queued task only does what is missing.
+- Frames of the chunk whose output is complete are skipped, so a re-queued task only does what
+  is missing. Complete means the whole file reads, every pixel, and carries taa's metadata
+  (taa.check_output): a file cut short after it was written still opens.
 - History needs earlier frames: up to --preroll frames before the first missing one (never
   before the shot's first frame) are resolved as read-only pre-roll; their results are thrown
   away. With a pre-roll reaching the shot start, output is identical to one run over the shot;
   otherwise it converges to it within a few frames (history mode).
-- Outputs are resolved into a scratch folder beside the output and renamed into place, so a
-  killed task never leaves a partial frame.
+- Outputs are resolved into a scratch folder beside the output (".taa-farm-HOST-PID-*") and
+  renamed into place, so a killed task never leaves a partial frame. SIGTERM and SIGINT stop it
+  between frames and remove the scratch folder; after SIGKILL, the next task over the same
+  output removes what is left (taa.remove_stale_temporaries).
 - One line per resolved frame on stdout: "PROGRESS: NN%" (of the frames this task resolves,
   pre-roll included).
-- Exit status: 0 done, 1 taa failed (its message on stderr), 2 bad arguments.
+- Exit status: 0 done, 1 taa failed (its message on stderr), 2 bad arguments, 128 + N when
+  signal N (SIGINT, SIGTERM) stopped it.
 """
 import argparse
 import os
 import re
 import shutil
+import signal
 import sys
 import tempfile
 
 import taa
+
+
+class Stop(BaseException):
+    """Raised by the SIGTERM/SIGINT handler: unwinds through `finally`, unlike the default."""
+
+    def __init__(self, signum):
+        super().__init__(signum)
+        self.signum = signum
+
+
+def stop_on(signum, _frame):
+    raise Stop(signum)
 
 
 def frame_range(text):
@@ -43,18 +60,9 @@ def expand(pattern, frame):
 
 
 def is_complete(path):
-    """Outputs are renamed into place whole, so an existing, readable file is complete."""
-    if not os.path.isfile(path):
-        return False
-    try:
-        import OpenImageIO as oiio
-    except ImportError:
-        return os.path.getsize(path) > 0
-    image = oiio.ImageInput.open(path)
-    if not image:
-        return False
-    image.close()
-    return True
+    """Reads the whole file: a frame cut short after its rename still opens."""
+    complete, _reason = taa.check_output(path)
+    return complete
 
 
 def parse_options(items):
@@ -90,6 +98,14 @@ def main(argv):
               file=sys.stderr)
         return 2
 
+    signal.signal(signal.SIGTERM, stop_on)
+    signal.signal(signal.SIGINT, stop_on)
+    out_dir = os.path.dirname(os.path.abspath(args.output))
+    removed, failed = taa.remove_stale_temporaries(os.path.abspath(args.output))
+    for path in removed:
+        print(f"taa_farm_post: removed a dead task's temporary {path}")
+    for reason in failed:
+        print(f"taa_farm_post: cannot remove a dead task's temporary {reason}", file=sys.stderr)
     missing = [f for f in range(first, last + 1) if not is_complete(expand(args.output, f))]
     if not missing:
         print(f"taa_farm_post: frames {first}-{last} already complete")
@@ -97,9 +113,8 @@ def main(argv):
         return 0
     start = max(shot_first, missing[0] - args.preroll)
     frames = list(range(start, last + 1))
-    out_dir = os.path.dirname(os.path.abspath(args.output))
     os.makedirs(out_dir, exist_ok=True)
-    scratch = tempfile.mkdtemp(prefix=".taa-farm-", dir=out_dir)
+    scratch = tempfile.mkdtemp(prefix=taa.farm_scratch_prefix(), dir=out_dir)
     scratch_pattern = os.path.join(scratch, os.path.basename(args.output))
 
     def progress(report):
@@ -123,4 +138,9 @@ def main(argv):
 
 
 if __name__ == "__main__":
-    sys.exit(main(sys.argv[1:]))
+    try:
+        sys.exit(main(sys.argv[1:]))
+    except Stop as stop:
+        print(f"taa_farm_post ERROR: interrupted by {signal.Signals(stop.signum).name}; frames "
+              "moved into place are complete", file=sys.stderr)
+        sys.exit(128 + stop.signum)

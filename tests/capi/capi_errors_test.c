@@ -1,6 +1,7 @@
 /* Error paths of the C ABI: NULL handles, wrong sizes and channel counts, unknown or mistyped
  * parameters, reading before resolving. Each failing call must return its status and leave a
  * message naming what was wrong; the node must stay usable afterwards. */
+#include <math.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -134,6 +135,28 @@ static void test_buffers(taa_node* node) {
   no_data.data = NULL;
   frame = frame_with(&no_data, NULL, NULL);
   CHECK(taa_node_push_frame(node, &frame) == TAA_ERROR_INVALID_ARGUMENT, "NULL data");
+
+  /* A jitter that is not a number of pixels would make every reconstruction weight NaN. */
+  frame = frame_with(&color, NULL, NULL);
+  frame.has_jitter = 1;
+  frame.jitter[0] = NAN;
+  CHECK(taa_node_push_frame(node, &frame) == TAA_ERROR_INVALID_ARGUMENT, "NaN jitter");
+  CHECK(contains(taa_node_last_error(node), "jitter (nan, 0") &&
+            contains(taa_node_last_error(node), "finite"), "message: %s",
+        taa_node_last_error(node));
+  frame.jitter[0] = 0.0f;
+  frame.jitter[1] = -INFINITY;
+  CHECK(taa_node_push_frame(node, &frame) == TAA_ERROR_INVALID_ARGUMENT, "-Inf jitter");
+
+  /* NaN camera matrices would reproject every pixel to NaN. */
+  float nan_matrix[16] = {0};
+  nan_matrix[0] = nan_matrix[5] = nan_matrix[10] = nan_matrix[15] = 1.0f;
+  nan_matrix[12] = NAN;
+  frame = frame_with(&color, NULL, NULL);
+  frame.world_to_ndc = nan_matrix;
+  CHECK(taa_node_push_frame(node, &frame) == TAA_ERROR_INVALID_ARGUMENT, "NaN matrix");
+  CHECK(contains(taa_node_last_error(node), "world_to_ndc holds NaN or Inf"), "message: %s",
+        taa_node_last_error(node));
 
   /* After all that, a valid frame resolves and clears the message. */
   for (int i = 0; i < W * H; ++i) {

@@ -260,14 +260,32 @@ TEST(CapiHalfBuffers, ExportCopiesTheBufferTypeAndConvertsTheOther) {
 
   for (const TypedImage& image : {TypedImage(halves), TypedImage(floats)}) {
     for (SampleType type : {SampleType::Half, SampleType::Float}) {
-      const TypedImage expected = image.type() == SampleType::Half && type == SampleType::Half
-                                      ? image
-                                      : as(image.toFloat(), type);
+      TypedImage expected = image.type() == SampleType::Half && type == SampleType::Half
+                                ? image
+                                : as(image.toFloat(), type);
+      if (image.type() == SampleType::Float && type == SampleType::Half) {
+        expected.halves()->pixels[2] = half(65504.0f);  // 70000 clamps: see the next test
+      }
       TypedImage output(2, 1, 4, type);
       taa::capi::exportColor(image, bufferOver(&output));
       EXPECT_EQ(mismatches(output, expected), 0)
           << name(image.type()) << " image into a " << name(type) << " buffer";
     }
+  }
+}
+
+// Issue 17: a float result beyond half's range became +-Inf in a host's half buffer. It is the
+// largest finite half instead, as the GL read-back into a half output clamps (finite_range.glsl).
+TEST(CapiHalfBuffers, FloatBeyondHalfRangeClampsInAHalfBuffer) {
+  Image floats(2, 1, 4);
+  floats.pixels = {70000.0f, -1e30f, std::numeric_limits<float>::max(), 1.0f,
+                   65519.0f, -65520.0f, 0.5f, 1.0f};
+  TypedImage output(2, 1, 4, SampleType::Half);
+  taa::capi::exportColor(TypedImage(floats), bufferOver(&output));
+  const std::vector<float> expected = {65504.0f, -65504.0f, 65504.0f, 1.0f,
+                                       65504.0f, -65504.0f, 0.5f, 1.0f};
+  for (std::size_t i = 0; i < expected.size(); ++i) {
+    EXPECT_EQ(float(output.halves()->pixels[i]), expected[i]) << "value " << floats.pixels[i];
   }
 }
 

@@ -308,9 +308,10 @@ TEST_F(ConventionsTest, BadInputGivesClearErrors) {
                                    "moving_object", 32, 20, 2);
   const std::string render = (cycles / "render.####.exr").string();
   const std::string out = (dir_ / "o" / "r.####.exr").string();
-  // A preset expecting channels the file lacks: missing and available names.
+  // A preset expecting channels the file lacks: missing and available names (alpha is
+  // optional: a file without it reads as opaque, so it is not among the missing).
   expectError(run({"--preset", "nuke", render, "-o", out}),
-              {"lacks channels R, G, B, A", "available: ViewLayer.Combined.R", "ViewLayer.Vector.X",
+              {"lacks channels R, G, B;", "available: ViewLayer.Combined.R", "ViewLayer.Vector.X",
                "render.0001.exr", "frame 1"});
   expectError(run({"--preset", "nuke", render, "--color-ch",
                    "ViewLayer.Combined.R,ViewLayer.Combined.G,ViewLayer.Combined.B", "--depth-ch",

@@ -7,6 +7,9 @@
 #include <fstream>
 #include <sstream>
 
+#include "scenegen/exr_output.h"
+#include "scenegen/scene_library.h"
+
 namespace taa::test {
 namespace fs = std::filesystem;
 namespace {
@@ -30,8 +33,18 @@ fs::path freshTestFolder() {
   return folder;
 }
 
+std::string taatoolPath() {
+  const char* other = std::getenv("TAA_TAATOOL_PATH");
+  return other && *other ? other : TAA_TAATOOL_PATH;
+}
+
 ToolRun runTaatool(const std::vector<std::string>& args, const fs::path& scratch) {
-  std::string command = quoted(TAA_TAATOOL_PATH);
+  return runProgram(taatoolPath(), args, scratch);
+}
+
+ToolRun runProgram(const std::string& program, const std::vector<std::string>& args,
+                   const fs::path& scratch) {
+  std::string command = quoted(program);
   for (const auto& a : args) command += " " + quoted(a);
   const fs::path out = scratch / "stdout.txt", err = scratch / "stderr.txt";
   command += " >" + quoted(out.string()) + " 2>" + quoted(err.string()) + " </dev/null";
@@ -49,6 +62,22 @@ void expectToolError(const ToolRun& run, const std::vector<std::string>& fragmen
   for (const auto& f : fragments) {
     EXPECT_NE(run.err.find(f), std::string::npos) << f << " in " << run.err;
   }
+}
+
+void writeSeparateFrames(const fs::path& folder, int first, int last, int width, int height,
+                         const std::string& scene) {
+  auto generator = scenes::makeScene(scene, width, height);
+  scenes::RenderSettings settings;
+  settings.truthSamplesPerAxis = 1;  // the truth is not what end-to-end tests check
+  for (int frame = first; frame <= last; ++frame) {
+    scenes::writeFrame(generator->render(frame, settings), scene, scenes::OutputLayout::Separate,
+                       folder.string());
+  }
+}
+
+std::vector<std::string> separateFileArgs(const fs::path& in, const fs::path& outPattern) {
+  return {(in / "beauty.####.exr").string(), "--depth", (in / "depth.####.exr").string(),
+          "--motion", (in / "motion.####.exr").string(), "-o", outPattern.string()};
 }
 
 }  // namespace taa::test

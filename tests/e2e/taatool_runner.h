@@ -15,12 +15,28 @@ struct ToolRun {
 // A fresh folder for the running test: TAA_TEST_TMPDIR/<test name>, emptied first.
 std::filesystem::path freshTestFolder();
 
-// Runs taatool (TAA_TAATOOL_PATH) with `args` and no standard input; stdout and stderr are
-// captured through files in `scratch`.
+// The taatool the tests run: TAA_TAATOOL_PATH, unless the environment variable of that name
+// gives another (to run a suite against another build).
+std::string taatoolPath();
+
+// Runs taatool with `args` and no standard input; stdout and stderr are captured through files
+// in `scratch`.
 ToolRun runTaatool(const std::vector<std::string>& args, const std::filesystem::path& scratch);
+// The same for any program.
+ToolRun runProgram(const std::string& program, const std::vector<std::string>& args,
+                   const std::filesystem::path& scratch);
 
 // Expects a failure as taatool reports one: exit status 1, stderr starting "taatool ERROR: ",
 // and each of `fragments` in the message.
 void expectToolError(const ToolRun& run, const std::vector<std::string>& fragments);
+
+// Frames [first, last] of the scene generator's `scene` at width x height written into `folder`
+// as separate files: beauty.####.exr (half RGBA), depth.####.exr, motion.####.exr.
+void writeSeparateFrames(const std::filesystem::path& folder, int first, int last, int width = 64,
+                         int height = 40, const std::string& scene = "moving_object");
+
+// taatool's arguments for writeSeparateFrames' files in `in`, output to `outPattern`.
+std::vector<std::string> separateFileArgs(const std::filesystem::path& in,
+                                          const std::filesystem::path& outPattern);
 
 }  // namespace taa::test

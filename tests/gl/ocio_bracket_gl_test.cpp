@@ -88,6 +88,87 @@ TEST_F(OcioBracketGl, EveryShippedBracketRoundTripsOverHalfRange) {
   }
 }
 
+// Half float's whole range, both signs: -65504 ... -2^-12, 0, 2^-12 ... 65504.
+std::vector<float> signedHalfRangeRamp(int countPerSign) {
+  std::vector<float> values = halfRangeRamp(countPerSign);
+  for (int i = 1; i < countPerSign; ++i) values.push_back(-values[std::size_t(i)]);
+  return values;
+}
+
+// Issue 17: scene-linear colour below -4 went through x / (x + 4) to +Inf (and stayed in history),
+// around -1000 it came back as -4. Every shipped bracket must map the whole signed half range to
+// finite working values and back to within 1e-3, on the GPU.
+TEST_F(OcioBracketGl, EveryShippedBracketIsFiniteAndInvertibleOverTheSignedHalfRange) {
+  const color::LoadedConfig shipped = color::loadConfig("");
+  const std::vector<float> values = signedHalfRangeRamp(512);
+  for (const std::string& name : color::listBrackets(shipped.config)) {
+    ColorOptions options;
+    options.bracket = name;
+    const color::OcioBracket bracket(options);
+    const auto working = runBracket(context_->functions(), bracket, values, false).working;
+    const auto rt = runBracket(context_->functions(), bracket, values, true).roundTrip;
+    for (std::size_t i = 0; i < values.size(); ++i) {
+      for (int c = 0; c < 3; ++c) {
+        const double x = values[i] * (c == 0 ? 1.0 : c == 1 ? 0.5 : 0.25);
+        ASSERT_TRUE(std::isfinite(working[4 * i + c])) << name << " forward of " << x;
+        ASSERT_TRUE(std::isfinite(rt[4 * i + c])) << name << " round trip of " << x;
+        EXPECT_LE(std::abs(rt[4 * i + c] - x) / std::max(std::abs(x), 1e-3), 1e-3)
+            << name << ": " << x << " comes back as " << rt[4 * i + c];
+      }
+    }
+  }
+}
+
+// The bracket that taa shipped before negatives were handled: x / (x + 4) from two log
+// transforms (it clamps x <= -4). Non-negative values must go through today's shipped
+// taa_reinhard bit for bit as through this one, so that no resolve of such input changes.
+const char* kFormerReinhard = R"(ocio_profile_version: 2
+roles: {default: linear, scene_linear: linear}
+file_rules:
+  - !<Rule> {name: Default, colorspace: default}
+displays:
+  none:
+    - !<View> {name: Raw, colorspace: linear}
+colorspaces:
+  - !<ColorSpace> {name: linear}
+  - !<ColorSpace>
+    name: former_reinhard
+    from_scene_reference: !<GroupTransform>
+      children:
+        - !<LogAffineTransform> {base: 2, lin_side_slope: [0.25, 0.25, 0.25], lin_side_offset: [1, 1, 1], log_side_slope: [-1, -1, -1], log_side_offset: [0, 0, 0]}
+        - !<LogAffineTransform> {base: 2, direction: inverse}
+        - !<MatrixTransform> {matrix: [-1, 0, 0, 0, 0, -1, 0, 0, 0, 0, -1, 0, 0, 0, 0, 1], offset: [1, 1, 1, 0]}
+)";
+
+TEST_F(OcioBracketGl, ReinhardIsUnchangedForNonNegativeValues) {
+  const std::string dir = std::string(TAA_TEST_TMPDIR) + "/former_reinhard";
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir + "/config.ocio") << kFormerReinhard;
+  ColorOptions former;
+  former.ocioConfig = dir + "/config.ocio";
+  former.bracket = "former_reinhard";
+  ColorOptions shipped;
+  shipped.bracket = "taa_reinhard";
+  std::vector<float> values = halfRangeRamp(2048);
+  for (int i = 0; i <= 1000; ++i) values.push_back(i / 1000.0f);  // shadows, densely
+  const Functions& gl = context_->functions();
+  const color::OcioBracket formerBracket(former), shippedBracket(shipped);
+  const auto expected = runBracket(gl, formerBracket, values, false).working;
+  const auto got = runBracket(gl, shippedBracket, values, false).working;
+  for (std::size_t i = 0; i < got.size(); ++i) {
+    ASSERT_EQ(got[i], expected[i]) << "value " << values[i / 4] << " channel " << i % 4;
+  }
+  float cpuFormer[3], cpuShipped[3];
+  for (float v : values) {
+    cpuFormer[0] = cpuShipped[0] = v;
+    cpuFormer[1] = cpuShipped[1] = 0.5f * v;
+    cpuFormer[2] = cpuShipped[2] = 0.25f * v;
+    formerBracket.toWorkingCpu()->applyRGB(cpuFormer);
+    shippedBracket.toWorkingCpu()->applyRGB(cpuShipped);
+    for (int c = 0; c < 3; ++c) ASSERT_EQ(cpuShipped[c], cpuFormer[c]) << "CPU, value " << v;
+  }
+}
+
 TEST_F(OcioBracketGl, GpuForwardMatchesCpuProcessorOnARamp) {
   std::vector<float> values;
   for (int i = 0; i < 256; ++i) values.push_back(i / 255.0f * 16.0f);  // 0..16 linear ramp

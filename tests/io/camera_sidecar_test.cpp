@@ -80,6 +80,10 @@ TEST(CameraSidecar, UnreadableOrMalformedFilesAreErrorsNamingTheFile) {
       {R"({"frames": {"3": {"view": [1, 2, 3], "projection": [1]}}})", "16 numbers"},
       {R"({"frames": {"3": {"view": [1,0,0,0, 0,1,0,0, 0,0,1,0, 0,0,0,1]}}})", "both"},
       {R"({"frames": {"3": {"jitter": "left"}}})", "jitter"},
+      // Issue 17: a jitter beyond float's range (JSON has no NaN or Inf; nlohmann refuses
+      // doubles that overflow) made the frame +Inf.
+      {R"({"frames": {"3": {"jitter": [1e39, 0]}}})", "jitter (inf, 0) from the camera sidecar is not a finite"},
+      {R"({"frames": {"3": {"jitter": [0, -3.5e38]}}})", "not a finite number of pixels"},
   };
   for (const auto& [text, message] : bad) {
     const std::string path = folder + "/bad.json";

@@ -93,6 +93,14 @@ TEST(ValidateCompression, RejectsUnknownNamesAndBadLevels) {
   }
 }
 
+// Issue 17, item 9: zip:0 and zip:99 passed the check (zlib has levels 1 to 9).
+TEST(ValidateCompression, RejectsLevelsOutOfRange) {
+  for (const std::string name : {"zip:0", "zip:99", "zips:10", "zip:1.5", "dwaa:0", "dwab:inf"}) {
+    const Error error = errorOf([&] { validateCompression(name); });
+    EXPECT_TRUE(contains(error.what(), "out of range in \"" + name + "\"")) << error.what();
+  }
+}
+
 TEST(WriteExrAtomic, FloatRoundTripKeepsValuesWindowsAndMetadata) {
   const std::string folder = scratchFolder();
   const std::string path = folder + "/out.0001.exr";

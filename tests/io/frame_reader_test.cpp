@@ -214,6 +214,40 @@ TEST(ReadFrame, NonFiniteValuesAreScrubbedAndCounted) {
   EXPECT_EQ(data.motion.pixels[3], 0.0f);
   EXPECT_EQ(data.motion.pixels[4], 3.0f);
   EXPECT_EQ(data.motion.pixels[5], -3.0f);
+  EXPECT_EQ(data.nonFiniteMotionValues, 2);  // counted for the report (issue 17)
+  EXPECT_EQ(data.motionPath, folder + "/mv.exr");
+}
+
+// Issue 17: float colour a half output cannot hold is counted, so that the clamp is reported.
+TEST(ReadFrame, FloatColorBeyondHalfRangeIsCounted) {
+  const std::string folder = scratchFolder();
+  writeTestExr(folder + "/c.exr", {"R", "G", "B", "A"}, [](int p, int c) {
+    if (p == 0 && c == 0) return 70000.0f;
+    if (p == 3 && c == 2) return -1e30f;
+    return p == 4 ? 65504.0f : 0.5f;  // the largest half itself is no clamp
+  });
+  AovLayout layout;
+  layout.color = {folder + "/c.exr", {"R", "G", "B", "A"}};
+  EXPECT_EQ(readFrame(layout, 1).colorValuesBeyondHalf, 2);
+}
+
+// Issue 17, item 9: a file without the alpha channel is opaque, as --help says; a missing B was
+// reported as "lacks channels B, A".
+TEST(ReadFrame, MissingAlphaReadsAsOpaqueAndOnlyRequiredChannelsAreListedMissing) {
+  const std::string folder = scratchFolder();
+  writeTestExr(folder + "/rgb.exr", {"R", "G", "B"}, [](int p, int c) { return float(p + c); });
+  writeTestExr(folder + "/rg.exr", {"R", "G"}, [](int p, int c) { return float(p + c); });
+  AovLayout layout;
+  layout.color = {folder + "/rgb.exr", {"R", "G", "B", "A"}};
+  const Image color = readFrame(layout, 1).color.toFloat();
+  for (int p = 0; p < 12; ++p) {
+    EXPECT_EQ(color.pixels[p * 4 + 2], float(p + 2));
+    EXPECT_EQ(color.pixels[p * 4 + 3], 1.0f);
+  }
+  layout.color.pattern = folder + "/rg.exr";
+  const Error error = errorOf([&] { readFrame(layout, 1); });
+  EXPECT_TRUE(contains(error.what(), "lacks channel B; channels available: R, G")) << error.what();
+  EXPECT_EQ(error.context().channel, "B");
 }
 
 TEST(ReadFrame, NonFiniteMaskMarksScrubbedPixelsOnly) {
@@ -350,6 +384,8 @@ TEST(ReadFrameErrors, DepthSizeDifferentFromColorStatesBothSizes) {
   EXPECT_TRUE(contains(message, "4x3")) << message;
   EXPECT_TRUE(contains(message, "depth")) << message;
   EXPECT_EQ(error.context().file, folder + "/depth.0002.exr");
+  // Issue 17: the colour frame may be the wrong one; the message names it with its window.
+  EXPECT_TRUE(contains(message, "4x3 at (0, 0) (" + folder + "/beauty.0002.exr)")) << message;
 }
 
 TEST(ReadFrameErrors, MotionSizeDifferentFromColorStatesBothSizes) {
@@ -361,6 +397,7 @@ TEST(ReadFrameErrors, MotionSizeDifferentFromColorStatesBothSizes) {
   EXPECT_TRUE(contains(message, "4x3")) << message;
   EXPECT_TRUE(contains(message, "motion")) << message;
   EXPECT_EQ(error.context().file, folder + "/mv.0002.exr");
+  EXPECT_TRUE(contains(message, "(" + folder + "/beauty.0002.exr)")) << message;
 }
 
 TEST(ReadFrameErrors, MotionWindowOriginDifferentFromColorIsAnError) {
@@ -372,6 +409,24 @@ TEST(ReadFrameErrors, MotionWindowOriginDifferentFromColorIsAnError) {
   const Error error = errorOf([&] { readFrame(separateFilesLayout(folder), 2); });
   EXPECT_TRUE(contains(error.what(), "4x3 at (1, 0)")) << error.what();
   EXPECT_TRUE(contains(error.what(), "4x3 at (0, 0)")) << error.what();
+}
+
+// Issue 17: NaN camera matrices would reproject every pixel to NaN; the header is refused.
+TEST(ReadFrameErrors, NonFiniteHeaderMatrixIsAnError) {
+  const std::string folder = scratchFolder();
+  OIIO::ImageSpec spec = makeSpec(4, 3, {"R", "G", "B", "A"});
+  float identity[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+  spec.attribute("worldToCamera", OIIO::TypeMatrix44, identity);
+  identity[5] = kNaN;
+  spec.attribute("worldToNDC", OIIO::TypeMatrix44, identity);
+  writeImage(folder + "/c.exr", spec, std::vector<float>(4 * 3 * 4, 0.5f));
+  AovLayout layout;
+  layout.color = {folder + "/c.exr", {"R", "G", "B", "A"}};
+  const Error error = errorOf([&] { readFrame(layout, 9); });
+  EXPECT_TRUE(contains(error.what(), "the color header's worldToNDC holds NaN or Inf"))
+      << error.what();
+  EXPECT_EQ(error.context().file, folder + "/c.exr");
+  EXPECT_EQ(error.context().frame, 9);
 }
 
 TEST(ReadFrameErrors, TextFileNamedExrIsRejected) {

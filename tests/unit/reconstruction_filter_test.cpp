@@ -1,9 +1,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <numeric>
 
+#include "resolve/jitter.h"
 #include "resolve/reconstruction_filter.h"
+#include "taa/error.h"
 
 namespace taa {
 namespace {
@@ -56,6 +59,31 @@ TEST(ReconstructionFilter, Lanczos2HasNegativeLobes) {
   EXPECT_LT(lanczos2Weight({1.5f, 0.0f}), 0.0f);
   EXPECT_FLOAT_EQ(lanczos2Weight({2.0f, 0.0f}), 0.0f);
   EXPECT_FLOAT_EQ(lanczos2Weight({0.0f, 0.0f}), 1.0f);
+}
+
+// Issue 17: a NaN jitter made every weight NaN and the whole frame +Inf. Jitter is checked where
+// it enters (resolve/jitter.h); here the weights fall back to the centre sample regardless.
+TEST(ReconstructionFilter, NonFiniteJitterGivesTheCentreSampleAlone) {
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  const float inf = std::numeric_limits<float>::infinity();
+  for (Reconstruction filter : {Reconstruction::BlackmanHarris, Reconstruction::Lanczos2}) {
+    for (glm::vec2 jitter : {glm::vec2(nan, 0.0f), glm::vec2(0.0f, inf), glm::vec2(-inf, nan)}) {
+      const std::array<float, 9> w = reconstructionWeights(filter, jitter);
+      for (int i = 0; i < 9; ++i) EXPECT_EQ(w[std::size_t(i)], i == 4 ? 1.0f : 0.0f);
+    }
+  }
+}
+
+TEST(Jitter, CheckedJitterRefusesNonFiniteOffsetsNamingTheSource) {
+  EXPECT_EQ(checkedJitter({0.25f, -0.5f}, "x"), glm::vec2(0.25f, -0.5f));
+  try {
+    checkedJitter({std::numeric_limits<float>::quiet_NaN(), 0.5f}, "the header attribute j",
+                  {"beauty.0007.exr", 7, ""});
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    EXPECT_STREQ(e.what(), "jitter (nan, 0.5) from the header attribute j is not a finite "
+                           "number of pixels : beauty.0007.exr (frame 7)");
+  }
 }
 
 }  // namespace

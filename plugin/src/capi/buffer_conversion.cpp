@@ -2,6 +2,7 @@
 
 #include <Imath/half.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -56,7 +57,10 @@ struct Layout {
   }
   void write(char* pixel, int channel, float value) const {
     if (half) {
-      write(pixel, channel, Imath::half(value));
+      // Beyond half's range the largest finite half, not Inf, as a half read-back from the GPU
+      // clamps (glsl/finite_range.glsl); within it Imath rounds to nearest even.
+      constexpr float kHalfMax = 65504.0f;
+      write(pixel, channel, Imath::half(std::clamp(value, -kHalfMax, kHalfMax)));
     } else {
       std::memcpy(pixel + channel * 4, &value, 4);
     }

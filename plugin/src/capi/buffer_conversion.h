@@ -28,7 +28,8 @@ Image importMotion(const taa_buffer& buffer, const io::MotionConvention& convent
 
 // Writes RGBA `image` into `buffer` (3 or 4 channels, the image's size); 3 drops alpha. Samples
 // already of the buffer's type are copied, others converted (half widens exactly, float -> half
-// rounds as Imath::half), so an output read back in the buffer's type passes through as is.
+// rounds as Imath::half, beyond +-65504 clamps to it), so an output read back in the buffer's
+// type passes through as is.
 void exportColor(const TypedImage& image, const taa_buffer& buffer);
 
 }  // namespace taa::capi

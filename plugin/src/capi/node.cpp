@@ -3,6 +3,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <utility>
 
 #include "capi/buffer_conversion.h"
@@ -87,6 +88,22 @@ void Node::pushFrame(const taa_frame& frame) {
   }
   // Convert every input before touching the resolver, so a bad buffer leaves history intact.
   // Half colour stays half: the resolver uploads it as is.
+  if (frame.has_jitter) {
+    try {
+      checkedJitter(glm::vec2(frame.jitter[0], frame.jitter[1]), "the host",
+                    {"", frame.frame, ""});
+    } catch (const Error& e) {
+      throw StatusError(TAA_ERROR_INVALID_ARGUMENT, e.what());
+    }
+  }
+  for (const float* matrix : {frame.world_to_camera, frame.world_to_ndc}) {
+    if (matrix && !std::all_of(matrix, matrix + 16, [](float v) { return std::isfinite(v); })) {
+      throw StatusError(TAA_ERROR_INVALID_ARGUMENT,
+                        "frame " + std::to_string(frame.frame) + ": " +
+                            (matrix == frame.world_to_camera ? "world_to_camera" : "world_to_ndc") +
+                            " holds NaN or Inf");
+    }
+  }
   const TypedImage color = importColor(*frame.color);
   const int width = color.width(), height = color.height();
   Image depth, motion;

@@ -8,6 +8,7 @@
 #include <map>
 #include <sstream>
 
+#include "cli/input_report.h"
 #include "color/ocio_bracket.h"
 #include "io/renderer_presets.h"
 #include "io/sequence_pattern.h"
@@ -208,9 +209,11 @@ CommandLine parseCommandLine(const std::vector<std::string>& args) {
       {"--gl", [&](const std::string& v) { cl.job.backend = gl::parseBackend(v); }},
       {"--threads",
        [&](const std::string& v) {
+         // Each frame in flight holds its AOVs in memory: more than a few buy nothing.
          const std::optional<int> threads = parseIntText(v);
-         if (!threads || *threads < 0) {
-           throw Error("--threads expects an integer >= 0, got \"" + v + "\"");
+         if (!threads || *threads < 0 || *threads > kMaxIoThreads) {
+           throw Error("--threads expects an integer from 0 to " + std::to_string(kMaxIoThreads) +
+                       ", got \"" + v + "\"");
          }
          cl.job.ioThreads = *threads;
        }},
@@ -224,6 +227,8 @@ CommandLine parseCommandLine(const std::vector<std::string>& args) {
       {"-v", [&] { cl.verbosity = Verbosity::Verbose; }},
       {"-q", [&] { cl.verbosity = Verbosity::Quiet; }},
       {"--debug-layers", [&] { cl.job.debugLayers = true; }},
+      {"--skip-missing", [&] { cl.skipMissing = true; }},
+      {"--strict", [&] { cl.strict = true; }},
   };
 
   for (std::size_t i = 0; i < args.size(); ++i) {
@@ -299,6 +304,24 @@ void resolveFrameList(CommandLine& cl) {
   } else if (io::hasFramePlaceholder(pattern)) {
     cl.job.frames = io::scanExistingFrames(pattern);
     if (cl.job.frames.empty()) throw Error("no frames found for the color pattern", {pattern});
+    cl.missingFrames.clear();
+    for (std::size_t i = 1; i < cl.job.frames.size(); ++i) {
+      for (int f = cl.job.frames[i - 1] + 1; f < cl.job.frames[i]; ++f) {
+        cl.missingFrames.push_back(f);
+      }
+    }
+    // A gap changes the result (history restarts after it) and is usually a render that failed:
+    // not silently, as oiiotool's --skip-bad-frames is not silent either.
+    if (!cl.missingFrames.empty() && !cl.skipMissing) {
+      const int first = cl.missingFrames.front();
+      throw Error(std::to_string(cl.missingFrames.size()) + " frame" +
+                      (cl.missingFrames.size() == 1 ? "" : "s") + " missing from the sequence " +
+                      std::to_string(cl.job.frames.front()) + "-" +
+                      std::to_string(cl.job.frames.back()) + ": " +
+                      frameListText(cl.missingFrames) +
+                      " (--skip-missing resolves around them, history restarting after each gap)",
+                  {io::expandFramePattern(pattern, first), first, ""});
+    }
   } else {
     cl.job.frames = {0};  // a single file: frame number 0 for jitter unless --frames says
   }
@@ -373,7 +396,10 @@ Usage:
 Sequences:
   COLOR_PATTERN            the jittered beauty sequence. Frame placeholders: '#' (4 digits),
                            '####' or '@@@@' (one digit per character), '%04d'
-  --frames RANGE           frames to resolve: 1-48, 1-48x2, 1-10,20-30 (default: all found)
+  --frames RANGE           frames to resolve, ascending: 1-48, 1-48x2, 1-10,20-30 (default:
+                           all found; a gap among them is an error unless --skip-missing)
+  --skip-missing           resolve around frames missing from the sequence found on disk
+                           (history restarts after each gap; reported with the frames)
   -o PATTERN               output sequence (written atomically: temp file, then rename)
 
 AOVs and channels:
@@ -432,10 +458,16 @@ taa:options, the resolve options used):
   --compression NAME       none, rle, zips, zip, piz, pxr24, b44, b44a, dwaa, dwab (default zip);
                            zip and zips are zlib level 1 (fast), zip:N picks level N (1-9)
 
+Input checks (reported on stderr with counts at the end of a run):
+  --strict                 make each report an error, before anything of its frame is written:
+                           NaN/Inf colour or motion set to 0, float colour clamped to a half
+                           output's range, a change of image size, frames skipped
+
 GL and diagnostics:
   --gl auto|egl|osmesa     OpenGL back end (default auto: EGL, falling back to OSMesa)
   --threads N              frames read ahead and written behind while the GPU resolves
-                           (default 2; 0: one step after another). Output is identical.
+                           (default 2; 0: one step after another; at most 16). Output is
+                           identical.
   --info                   print GL vendor/renderer/version, OCIO and OIIO versions
   --list-brackets          list the tonemap brackets the active OCIO config offers
   --list-options           the resolve options as a Markdown table
@@ -444,6 +476,9 @@ GL and diagnostics:
   -h, --help               this text
 
 Errors are printed as "taatool ERROR: <what> : <file> (frame N, channel C)"; exit status 1.
+SIGINT or SIGTERM stops the run after the frames in flight are written (a second one at once);
+exit status 130 or 143. Temporary files of runs that died (SIGKILL) are removed by the next run
+over the same output.
 )help";
   text.replace(text.find("@RESOLVE_OPTIONS@"), 17, resolveOptionsHelp());
   text.replace(text.find("@PRESETS@"), 9, io::presetNames());

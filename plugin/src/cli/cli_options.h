@@ -17,6 +17,9 @@ struct CommandLine {
   bool listOptions = false;
   Verbosity verbosity = Verbosity::Normal;
   std::string framesText;  // --frames as given; empty = every frame found on disk
+  bool skipMissing = false;  // --skip-missing: resolve around frames missing from the sequence
+  bool strict = false;       // --strict: what would change the result silently is an error
+  std::vector<int> missingFrames;  // gaps in the frames found on disk (resolveFrameList)
   SequenceJob job;         // everything else, ready to run once frames are known
 };
 
@@ -28,7 +31,9 @@ CommandLine parseCommandLine(const std::vector<std::string>& args);
 // config is given as "$OCIO".)
 void useOcioEnvironmentUnlessGiven(CommandLine& commandLine, const std::vector<std::string>& args);
 
-// Fills job.frames from --frames or, without it, from the color files found on disk.
+// Fills job.frames from --frames or, without it, from the color files found on disk. Frames
+// missing between the first and last found are an error naming the first missing file, unless
+// --skip-missing is given (they are kept in missingFrames for the report).
 void resolveFrameList(CommandLine& commandLine);
 
 std::string helpText();

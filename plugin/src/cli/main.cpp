@@ -1,13 +1,17 @@
 // taatool: resolve a jittered EXR AOV sequence into an anti-aliased one (oiiotool-style CLI).
-// All failures end here: "taatool ERROR: ..." on stderr and exit status 1.
+// All failures end here: "taatool ERROR: ..." on stderr and exit status 1 (128 + the signal's
+// number when SIGINT or SIGTERM stopped the run).
+#include <csignal>
 #include <iostream>
 #include <string>
 #include <vector>
 
 #include "cli/cli_options.h"
 #include "cli/info.h"
+#include "cli/input_report.h"
 #include "fast_zlib/fast_zlib.h"
 #include "taa/error.h"
+#include "util/interruption.h"
 
 namespace {
 
@@ -38,22 +42,41 @@ int run(const std::vector<std::string>& args) {
     return 0;
   }
 
+  const StopSignals stopSignals;  // SIGINT/SIGTERM stop the run between frames
   cli::resolveFrameList(cl);
+  cli::InputReport inputReport(cl);
   JobCallbacks callbacks;
   callbacks.log = log;
+  callbacks.frameRead = [&inputReport](const FrameReport& report) {
+    inputReport.frameRead(report);
+  };
+  callbacks.stopRequested = [] { return StopSignals::received() != 0; };
   callbacks.frameDone = [verbose](const FrameReport& report) {
     if (!verbose) return;
     std::cout << "frame " << report.frame << " (" << report.index + 1 << "/" << report.count
               << "): " << report.inputPath << " -> " << report.outputPath;
-    if (report.historyReset) std::cout << " [history reset]";
+    if (report.sizeChanged) {
+      std::cout << " [new size " << report.width << "x" << report.height << ": history reset]";
+    } else if (report.historyReset) {
+      std::cout << " [history reset]";
+    }
     if (report.cutDetected) std::cout << " [cut detected: history reset]";
     if (report.nonFiniteColorValues > 0) {
       std::cout << " [" << report.nonFiniteColorValues << " NaN/Inf color values set to 0]";
+    }
+    if (report.nonFiniteMotionValues > 0) {
+      std::cout << " [" << report.nonFiniteMotionValues << " NaN/Inf motion values set to 0]";
+    }
+    if (report.clampedColorValues > 0) {
+      std::cout << " [" << report.clampedColorValues << " color values beyond half's range]";
     }
     std::cout << std::endl;
   };
   runSequenceJob(cl.job, callbacks);
   if (!quiet) {
+    for (const std::string& warning : inputReport.warnings()) {
+      std::cerr << "taatool WARNING: " << warning << "\n";
+    }
     std::cout << "taatool: resolved " << cl.job.frames.size() << " frame(s) to "
               << cl.job.outputPattern << std::endl;
   }
@@ -65,6 +88,11 @@ int run(const std::vector<std::string>& args) {
 int main(int argc, char** argv) {
   try {
     return run(std::vector<std::string>(argv + 1, argv + argc));
+  } catch (const taa::Stopped& e) {
+    const int signal = taa::StopSignals::received();
+    std::cerr << "taatool ERROR: interrupted by " << (signal == SIGINT ? "SIGINT" : "SIGTERM")
+              << ": " << e.what() << std::endl;
+    return 128 + signal;  // the shell's convention for a process ended by that signal
   } catch (const std::exception& e) {
     std::cerr << "taatool ERROR: " << e.what() << std::endl;
     return 1;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <sstream>
 
 #include "color/shipped_config.h"
@@ -213,5 +214,15 @@ std::string OcioBracket::glsl() const {
 }
 
 std::string OcioBracket::cacheId() const { return cacheId_; }
+
+OcioBracket::Range OcioBracket::workingRange() const {
+  constexpr float kHalfMax = 65504.0f;
+  float lo[3] = {-kHalfMax, -kHalfMax, -kHalfMax}, hi[3] = {kHalfMax, kHalfMax, kHalfMax};
+  toWorkingCpu_->applyRGB(lo);
+  toWorkingCpu_->applyRGB(hi);
+  const float inf = std::numeric_limits<float>::infinity();
+  if (!std::isfinite(lo[0]) || !std::isfinite(hi[0]) || !(lo[0] < hi[0])) return {-inf, inf};
+  return {lo[0], hi[0]};
+}
 
 }  // namespace taa::color

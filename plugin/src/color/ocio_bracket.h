@@ -48,6 +48,15 @@ class OcioBracket {
   // Changes when either processor changes: the resolve program is rebuilt only then.
   std::string cacheId() const;
 
+  // The working-space image of half float's range, toWorking(-65504) .. toWorking(65504) of grey,
+  // where the inverse gives finite values: the resolve keeps reconstruction overshoot within
+  // reach of it (glsl/finite_range.glsl). No limit (-inf, inf) for a bracket that is not finite
+  // and increasing there.
+  struct Range {
+    float lo, hi;
+  };
+  Range workingRange() const;
+
   const OCIO::ConstCPUProcessorRcPtr& toWorkingCpu() const { return toWorkingCpu_; }
   const OCIO::ConstCPUProcessorRcPtr& fromWorkingCpu() const { return fromWorkingCpu_; }
 

@@ -45,7 +45,7 @@ double toPlanar(double value, const DepthConvention& c) {
 
 }  // namespace
 
-void convertMotion(Image& motion, const MotionConvention& convention, const RasterWindow& window) {
+int convertMotion(Image& motion, const MotionConvention& convention, const RasterWindow& window) {
   const glm::dvec2 units = pixelsPerUnit(convention.units, window);
   const double sign = convention.scale * (convention.toPrevious ? 1.0 : -1.0);
   const double xFactor = units.x * sign;
@@ -55,19 +55,30 @@ void convertMotion(Image& motion, const MotionConvention& convention, const Rast
   auto decode = [&](float value) {
     return centred ? (double(value) - 0.5) * centredScale : double(value);
   };
+  int zeroed = 0;
+  // Checked in double: converting a double beyond float's range to float is undefined.
+  auto toPixels = [&](double value) {
+    if (std::abs(value) <= double(std::numeric_limits<float>::max())) return float(value);
+    ++zeroed;  // NaN, Inf, or beyond float after scaling
+    return 0.0f;
+  };
   for (std::size_t i = 0; i + 1 < motion.pixels.size(); i += 2) {
-    const float x = float(decode(motion.pixels[i]) * xFactor);
-    const float y = float(decode(motion.pixels[i + 1]) * yFactor);
-    motion.pixels[i] = std::isfinite(x) ? x : 0.0f;
-    motion.pixels[i + 1] = std::isfinite(y) ? y : 0.0f;
+    const float x = toPixels(decode(motion.pixels[i]) * xFactor);
+    const float y = toPixels(decode(motion.pixels[i + 1]) * yFactor);
+    motion.pixels[i] = x;
+    motion.pixels[i + 1] = y;
   }
+  return zeroed;
 }
 
 void convertDepth(Image& depth, const DepthConvention& convention) {
   for (float& value : depth.pixels) {
-    const float planar = float(toPlanar(value, convention));
-    // NaN and -inf carry no distance either: treat them as "no hit" too.
-    value = std::isfinite(planar) && planar < convention.noHitAbove ? planar : kInfinity;
+    // NaN and -inf carry no distance either: treat them as "no hit" too. Compared in double:
+    // a double beyond float's range converted to float would be undefined.
+    const double planar = toPlanar(value, convention);
+    const bool hit = std::isfinite(planar) && planar < double(convention.noHitAbove) &&
+                     std::abs(planar) <= double(std::numeric_limits<float>::max());
+    value = hit ? float(planar) : kInfinity;
   }
 }
 

@@ -12,9 +12,10 @@
 
 namespace taa::io {
 
-// Motion (2 channels) in place: per MotionConvention; NaN/Inf results become 0.
-// `window` gives the display size that Ndc and Uv units refer to.
-void convertMotion(Image& motion, const MotionConvention& convention, const RasterWindow& window);
+// Motion (2 channels) in place: per MotionConvention; NaN/Inf results become 0. Returns how many
+// values were set to 0 so (the sequence job reports them). `window` gives the display size that
+// Ndc and Uv units refer to.
+int convertMotion(Image& motion, const MotionConvention& convention, const RasterWindow& window);
 
 // Depth (1 channel) in place, for every kind except Radial (which needs the pixel rays: see
 // radialToPlanar): to planar distance, +inf where nothing was hit.

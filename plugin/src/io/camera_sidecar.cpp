@@ -3,8 +3,11 @@
 #include <glm/gtc/type_ptr.hpp>
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <fstream>
+#include <limits>
 
+#include "resolve/jitter.h"
 #include "taa/error.h"
 #include "util/number_text.h"
 
@@ -29,6 +32,14 @@ glm::dmat4 readMatrix(const json& value, const char* key, const ErrorContext& co
   return glm::make_mat4(numbers);
 }
 
+// A double as float; beyond float's range +-infinity (a plain conversion would be undefined).
+float toFloat(double value) {
+  const double limit = std::numeric_limits<float>::max();
+  if (std::abs(value) <= limit) return float(value);
+  return value > 0.0 ? std::numeric_limits<float>::infinity()
+                     : -std::numeric_limits<float>::infinity();
+}
+
 SidecarFrame readEntry(const json& entry, const ErrorContext& context) {
   if (!entry.is_object()) throw Error("sidecar frame entry must be an object", context);
   SidecarFrame frame;
@@ -50,7 +61,8 @@ SidecarFrame readEntry(const json& entry, const ErrorContext& context) {
     if (!j.is_array() || j.size() != 2 || !j[0].is_number() || !j[1].is_number()) {
       throw Error("sidecar entry \"jitter\" must be [jx, jy] in pixels", context);
     }
-    frame.jitter = glm::vec2(j[0].get<float>(), j[1].get<float>());
+    const glm::vec2 jitter(toFloat(j[0].get<double>()), toFloat(j[1].get<double>()));
+    frame.jitter = checkedJitter(jitter, "the camera sidecar", context);
   }
   return frame;
 }

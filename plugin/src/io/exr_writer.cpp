@@ -1,16 +1,16 @@
 #include "io/exr_writer.h"
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <atomic>
 #include <cctype>
 #include <cerrno>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <system_error>
 
+#include "io/stale_temp_files.h"
 #include "taa/error.h"
 
 namespace taa::io {
@@ -97,14 +97,11 @@ std::string compressionAttribute(const std::string& compression) {
   return compression;
 }
 
-// ".<name>.taa-tmp-<pid>-<n>.exr": hidden, unique per process and call, and ending in .exr.
+// ".<name>.taa-tmp-<host>-<pid>-<n>.exr": hidden, unique per host, process and call, ending in
+// .exr; a later run removes it if this process dies before the rename (io/stale_temp_files.h).
 fs::path temporaryPathFor(const fs::path& finalPath) {
   static std::atomic<unsigned> counter{0};
-  // Shortened so that the suffix cannot push a long name past the file system's 255 bytes.
-  const std::string base = finalPath.filename().string().substr(0, 200);
-  const std::string name = "." + base + ".taa-tmp-" + std::to_string(::getpid()) + "-" +
-                           std::to_string(counter++) + ".exr";
-  return finalPath.parent_path() / name;
+  return finalPath.parent_path() / temporaryFileName(finalPath.filename().string(), counter++);
 }
 
 std::vector<std::string> colorNames(const WriteOptions& options) {
@@ -294,9 +291,19 @@ void validateCompression(const std::string& compression) {
       "optionally with :level for zip, zips, dwaa and dwab)";
   if (!known) throw Error("unknown EXR compression \"" + compression + "\"" + expected);
   if (colon == std::string::npos) return;
-  const bool takesLevel = name == "zip" || name == "zips" || name == "dwaa" || name == "dwab";
-  if (!takesLevel || !isNumber(compression.substr(colon + 1))) {
+  const bool zip = name == "zip" || name == "zips";
+  const bool takesLevel = zip || name == "dwaa" || name == "dwab";
+  const std::string level = compression.substr(colon + 1);
+  if (!takesLevel || !isNumber(level)) {
     throw Error("bad EXR compression level in \"" + compression + "\"" + expected);
+  }
+  // zlib knows levels 1 to 9 (0 would store uncompressed); DWA's level is a positive quality.
+  const double value = std::strtod(level.c_str(), nullptr);
+  const bool inRange = zip ? level.size() == 1 && value >= 1.0 && value <= 9.0
+                           : value > 0.0 && std::isfinite(value);
+  if (!inRange) {
+    throw Error("EXR compression level out of range in \"" + compression + "\" (" +
+                (zip ? "zip and zips take 1 to 9" : "dwaa and dwab take a level above 0") + ")");
   }
 }
 

@@ -4,13 +4,16 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <deque>
 #include <filesystem>
 #include <limits>
 #include <memory>
 #include <system_error>
+#include <type_traits>
 
 #include "io/aov_conversion.h"
 #include "io/sequence_pattern.h"
@@ -49,6 +52,12 @@ OpenExr openExr(const std::string& path, const std::string& aovName, int frame) 
   std::error_code ignored;
   if (!std::filesystem::exists(path, ignored)) {
     throw Error("cannot find the " + aovName + " file", context);
+  }
+  // OIIO reports a file it cannot open as "not an OpenEXR file"; say why it cannot be read.
+  if (std::FILE* file = std::fopen(path.c_str(), "rb")) {
+    std::fclose(file);
+  } else {
+    throw Error("cannot read the " + aovName + " file: " + std::strerror(errno), context);
   }
   auto input = OIIO::ImageInput::open(path);
   if (!input) {
@@ -201,14 +210,17 @@ void requireChannelCount(const AovSource& source, std::size_t low, std::size_t h
   }
 }
 
-// Every AOV must cover exactly the color's pixels; resampling is not taa's job.
+// Every AOV must cover exactly the color's pixels; resampling is not taa's job. Either file may
+// be the odd one out (a colour frame rendered at the wrong size is as likely as a wrong depth
+// frame), so the message names both files with their windows.
 void requireSameWindow(const OpenExr& file, int part, const OIIO::ImageSpec& colorSpec,
-                       const std::string& aovName, int frame) {
+                       const std::string& colorPath, const std::string& aovName, int frame) {
   const OIIO::ImageSpec& spec = file.parts[std::size_t(part)];
   if (spec.x != colorSpec.x || spec.y != colorSpec.y || spec.width != colorSpec.width ||
       spec.height != colorSpec.height) {
-    throw Error("the " + aovName + " data window " + describeWindow(spec) +
-                    " differs from the color data window " + describeWindow(colorSpec),
+    throw Error("the " + aovName + " data window " + describeWindow(spec) + " (" + file.path +
+                    ") differs from the color data window " + describeWindow(colorSpec) + " (" +
+                    colorPath + ")",
                 {file.path, frame, ""});
   }
 }
@@ -230,38 +242,49 @@ SampleType colorSampleType(const OIIO::ImageSpec& spec, const std::vector<std::s
   return SampleType::Half;
 }
 
+constexpr float kHalfMax = 65504.0f;
+
 bool isFinite(float value) { return std::isfinite(value); }
 bool isFinite(Imath::half value) { return value.isFinite(); }
 
-// Fills alpha with 1 when the colour has 3 channels, replaces NaN/Inf by 0 and counts them. The
-// mask (1 where a value was replaced) is made only when some value is.
+// Fills alpha with 1 when the colour has 3 channels, replaces NaN/Inf by 0 and counts them, and
+// counts the finite values a half output cannot hold. The mask (1 where a value was replaced) is
+// made only when some value is.
 template <typename T>
-void finishRgba(ImageOf<T>& rgba, int inputChannels, int& nonFiniteCount, Image& nonFiniteMask) {
+void finishRgba(ImageOf<T>& rgba, int inputChannels, FrameData& data) {
   const std::size_t pixelCount = std::size_t(rgba.width) * rgba.height;
   if (inputChannels == 3) {
     for (std::size_t pixel = 0; pixel < pixelCount; ++pixel) rgba.pixels[pixel * 4 + 3] = T(1.0f);
   }
   for (std::size_t i = 0; i < rgba.pixels.size(); ++i) {
-    if (isFinite(rgba.pixels[i])) continue;
+    if (isFinite(rgba.pixels[i])) {
+      if constexpr (std::is_same_v<T, float>) {
+        if (std::abs(rgba.pixels[i]) > kHalfMax) ++data.colorValuesBeyondHalf;
+      }
+      continue;
+    }
     rgba.pixels[i] = T(0.0f);
-    ++nonFiniteCount;
-    if (nonFiniteMask.empty()) nonFiniteMask = Image(rgba.width, rgba.height, 1);
-    nonFiniteMask.pixels[i / 4] = 1.0f;
+    ++data.nonFiniteColorValues;
+    if (data.nonFiniteMask.empty()) data.nonFiniteMask = Image(rgba.width, rgba.height, 1);
+    data.nonFiniteMask.pixels[i / 4] = 1.0f;
   }
 }
 
-// The colour channels as RGBA in their stored type (see colorSampleType).
-TypedImage readColor(OpenExr& file, int part, const std::vector<std::string>& names, int frame,
-                     int& nonFiniteCount, Image& nonFiniteMask) {
+// The colour channels of `source` as RGBA in their stored type (see colorSampleType). The fourth
+// (alpha) is optional: a file without it reads as opaque, A = 1.
+TypedImage readColor(OpenExr& file, int part, const AovSource& source, int frame,
+                     FrameData& data) {
   const OIIO::ImageSpec& spec = file.parts[std::size_t(part)];
+  std::vector<std::string> names = source.channels;
+  if (names.size() == 4 && !hasChannels(spec, {names[3]})) names.pop_back();
   const SampleType type = colorSampleType(spec, names);
   TypedImage rgba(spec.width, spec.height, 4, type);
   readChannelsInto(file, part, names, "color", frame,
                    type == SampleType::Half ? OIIO::TypeHalf : OIIO::TypeFloat, rgba.data(), 4);
   if (HalfImage* half = rgba.halves()) {
-    finishRgba(*half, int(names.size()), nonFiniteCount, nonFiniteMask);
+    finishRgba(*half, int(names.size()), data);
   } else {
-    finishRgba(*rgba.floats(), int(names.size()), nonFiniteCount, nonFiniteMask);
+    finishRgba(*rgba.floats(), int(names.size()), data);
   }
   return rgba;
 }
@@ -269,10 +292,18 @@ TypedImage readColor(OpenExr& file, int part, const std::vector<std::string>& na
 // The header's camera, if it has both matrices. EXR matrices act on row vectors (p' = p M) and
 // are stored row by row; read as GLM's column-major storage, that is exactly the transpose,
 // which acts on column vectors as GLM expects.
-std::optional<FrameCamera> headerCamera(const OIIO::ImageSpec& spec) {
+std::optional<FrameCamera> headerCamera(const OIIO::ImageSpec& spec, const std::string& path,
+                                        int frame) {
   const OIIO::ParamValue* toCamera = spec.find_attribute("worldToCamera", OIIO::TypeMatrix44);
   const OIIO::ParamValue* toNdc = spec.find_attribute("worldToNDC", OIIO::TypeMatrix44);
   if (!toCamera || !toNdc) return std::nullopt;
+  for (const OIIO::ParamValue* matrix : {toCamera, toNdc}) {
+    const float* values = static_cast<const float*>(matrix->data());
+    if (!std::all_of(values, values + 16, [](float v) { return std::isfinite(v); })) {
+      throw Error("the color header's " + matrix->name().string() + " holds NaN or Inf",
+                  {path, frame, ""});
+    }
+  }
   FrameCamera camera;
   camera.worldToCamera = glm::dmat4(glm::make_mat4(static_cast<const float*>(toCamera->data())));
   camera.worldToNdc = glm::dmat4(glm::make_mat4(static_cast<const float*>(toNdc->data())));
@@ -295,7 +326,7 @@ void chooseCamera(FrameData& data, const CameraInputs& cameras) {
       return;
     }
   }
-  data.camera = headerCamera(data.colorSpec);
+  data.camera = headerCamera(data.colorSpec, data.colorPath, data.frame);
   data.ndc = cameras.headerNdc;
 }
 
@@ -348,10 +379,11 @@ FrameData readFrame(const AovLayout& layout, int frame, const CameraInputs& came
 
   FileSet files(frame);
   OpenExr& colorFile = files.get(data.colorPath, "color");
-  const int colorPart = findPart(colorFile, layout.color, "color", frame);
+  AovSource requiredColor = layout.color;  // alpha is optional (readColor)
+  requiredColor.channels.resize(3);
+  const int colorPart = findPart(colorFile, requiredColor, "color", frame);
   data.colorSpec = colorFile.parts[std::size_t(colorPart)];
-  data.color = readColor(colorFile, colorPart, layout.color.channels, frame,
-                         data.nonFiniteColorValues, data.nonFiniteMask);
+  data.color = readColor(colorFile, colorPart, layout.color, frame, data);
   data.window = rasterWindow(data.colorSpec);
   chooseCamera(data, cameras);
   data.passthrough = readPassthrough(colorFile, colorPart, layout.passthrough, frame);
@@ -359,7 +391,7 @@ FrameData readFrame(const AovLayout& layout, int frame, const CameraInputs& came
   if (layout.depth) {
     OpenExr& file = files.get(aovPath(*layout.depth, data.colorPath, frame), "depth");
     const int part = findPart(file, *layout.depth, "depth", frame);
-    requireSameWindow(file, part, data.colorSpec, "depth", frame);
+    requireSameWindow(file, part, data.colorSpec, data.colorPath, "depth", frame);
     data.depth = readFloatChannels(file, part, layout.depth->channels, "depth", frame);
     if (layout.depthConvention.kind == DepthKind::Radial) {
       radialToPlanar(data.depth, pixelRayFor(data, layout.depthConvention, file.path),
@@ -371,9 +403,10 @@ FrameData readFrame(const AovLayout& layout, int frame, const CameraInputs& came
   if (layout.motion) {
     OpenExr& file = files.get(aovPath(*layout.motion, data.colorPath, frame), "motion");
     const int part = findPart(file, *layout.motion, "motion", frame);
-    requireSameWindow(file, part, data.colorSpec, "motion", frame);
+    requireSameWindow(file, part, data.colorSpec, data.colorPath, "motion", frame);
     data.motion = readFloatChannels(file, part, layout.motion->channels, "motion", frame);
-    convertMotion(data.motion, layout.motionConvention, data.window);
+    data.motionPath = file.path;
+    data.nonFiniteMotionValues = convertMotion(data.motion, layout.motionConvention, data.window);
   }
   return data;
 }

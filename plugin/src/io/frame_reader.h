@@ -23,6 +23,10 @@ struct FrameData {
   int nonFiniteColorValues = 0;   // how many color values were NaN/Inf and scrubbed to 0
   Image nonFiniteMask;            // 1 channel: 1 where a color value was scrubbed, else 0;
                                   // empty when none was
+  int colorValuesBeyondHalf = 0;  // finite float color values beyond +-65504 (a half output
+                                  // clamps them)
+  int nonFiniteMotionValues = 0;  // motion values NaN/Inf (before or after conversion), set to 0
+  std::string motionPath;         // the file motion came from; empty without motion
   std::optional<FrameCamera> camera;  // from the sidecar, else the color header's
                                       // worldToCamera + worldToNDC
   NdcConvention ndc = NdcConvention::ZeroOneYDown;  // the convention of camera->worldToNdc
@@ -43,9 +47,10 @@ struct CameraInputs {
 // the AOV's part (multi-part files: by part name, or the first part holding every channel), in
 // the order the layout lists them (not the file's order). Scanline and tiled files alike.
 // Colour keeps its stored type (all half: half, else float); depth and motion are float.
-// Conversions: color NaN/Inf -> 0 (counted), 3 channels -> A = 1; depth per DepthConvention
+// Conversions: color NaN/Inf -> 0 (counted), 3 channels or a 4th (alpha) channel missing from
+// the file -> A = 1; depth per DepthConvention
 // (radial depth uses the frame's camera, else the convention's field of view); motion per
-// MotionConvention (Ndc and Uv units refer to the display window), then NaN/Inf -> 0.
+// MotionConvention (Ndc and Uv units refer to the display window), then NaN/Inf -> 0 (counted).
 // Throws taa::Error naming file, frame and channel for: a missing or unreadable file, a non-EXR
 // (e.g. a PNG, whatever its name), truncated or corrupt file, a missing part (listing those
 // available), a missing channel (listing those available), a wrong channel count for an AOV,

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <climits>
 #include <filesystem>
 
 #include "io/sequence_pattern.h"
@@ -19,8 +20,8 @@ bool isFrameNumber(const std::string& text) {
 
 }  // namespace
 
-std::vector<int> scanExistingFrames(const std::string& pattern) {
-  if (!hasFramePlaceholder(pattern)) return {};
+std::optional<int> frameOfFileName(const std::string& pattern, const std::string& fileName) {
+  if (!hasFramePlaceholder(pattern)) return std::nullopt;
   namespace fs = std::filesystem;
   // The text around the placeholder in the file name, found by expanding two frames and
   // comparing, so the placeholder syntax is parsed in one place only (sequence_pattern.cpp).
@@ -37,20 +38,31 @@ std::vector<int> scanExistingFrames(const std::string& pattern) {
   const std::string prefix = one.substr(0, prefixLength);
   const std::string suffix = one.substr(one.size() - suffixLength);
 
+  const std::string& name = fileName;
+  if (name.size() <= prefix.size() + suffix.size()) return std::nullopt;
+  if (name.compare(0, prefix.size(), prefix) != 0) return std::nullopt;
+  if (name.compare(name.size() - suffix.size(), suffix.size(), suffix) != 0) return std::nullopt;
+  const std::string middle =
+      name.substr(prefix.size(), name.size() - prefix.size() - suffix.size());
+  if (!isFrameNumber(middle) || middle.size() > 10) return std::nullopt;
+  const long long number = std::stoll(middle);
+  if (number < INT_MIN || number > INT_MAX) return std::nullopt;
+  const int frame = int(number);
+  // Keep only names the pattern itself produces (rejects other paddings).
+  if (fs::path(expandFramePattern(pattern, frame)).filename() != name) return std::nullopt;
+  return frame;
+}
+
+std::vector<int> scanExistingFrames(const std::string& pattern) {
+  if (!hasFramePlaceholder(pattern)) return {};
+  namespace fs = std::filesystem;
   fs::path folder = fs::path(expandFramePattern(pattern, 1)).parent_path();
   if (folder.empty()) folder = ".";
   std::error_code ec;
   std::vector<int> frames;
   for (const auto& entry : fs::directory_iterator(folder, ec)) {
-    const std::string name = entry.path().filename().string();
-    if (name.size() <= prefix.size() + suffix.size()) continue;
-    if (name.compare(0, prefix.size(), prefix) != 0) continue;
-    if (name.compare(name.size() - suffix.size(), suffix.size(), suffix) != 0) continue;
-    const std::string middle = name.substr(prefix.size(), name.size() - prefix.size() - suffix.size());
-    if (!isFrameNumber(middle) || middle.size() > 10) continue;
-    const int frame = std::stoi(middle);
-    // Keep only names the pattern itself produces (rejects other paddings).
-    if (fs::path(expandFramePattern(pattern, frame)).filename() == name) frames.push_back(frame);
+    const std::optional<int> frame = frameOfFileName(pattern, entry.path().filename().string());
+    if (frame) frames.push_back(*frame);
   }
   std::sort(frames.begin(), frames.end());
   return frames;

@@ -1,5 +1,8 @@
 #include "resolve/jitter.h"
 
+#include <cmath>
+#include <sstream>
+
 namespace taa {
 
 double radicalInverse(int index, int base) {
@@ -29,6 +32,15 @@ glm::vec2 frameJitter(int frame, const JitterOptions& options) {
   const int i = haltonIndex(frame, options);
   return options.scale * glm::vec2(static_cast<float>(radicalInverse(i, 2) - 0.5),
                                    static_cast<float>(radicalInverse(i, 3) - 0.5));
+}
+
+glm::vec2 checkedJitter(glm::vec2 jitter, const std::string& source,
+                        const ErrorContext& context) {
+  if (std::isfinite(jitter.x) && std::isfinite(jitter.y)) return jitter;
+  std::ostringstream what;  // prints nan, inf, -inf
+  what << "jitter (" << jitter.x << ", " << jitter.y << ") from " << source
+       << " is not a finite number of pixels";
+  throw Error(what.str(), context);
 }
 
 }  // namespace taa

@@ -4,6 +4,9 @@
 
 #include <glm/vec2.hpp>
 
+#include <string>
+
+#include "taa/error.h"
 #include "taa/options.h"
 
 namespace taa {
@@ -18,5 +21,11 @@ int haltonIndex(int frame, const JitterOptions& options);
 // The jitter of `frame`: (halton2(i) - 0.5, halton3(i) - 0.5) times options.scale, or (0, 0)
 // for None.
 glm::vec2 frameJitter(int frame, const JitterOptions& options);
+
+// `jitter` when both offsets are finite; else throws taa::Error "jitter (x, y) from `source` is
+// not a finite number of pixels" with `context`. A NaN or Inf offset (a header attribute, a
+// sidecar, a host) would make every reconstruction weight NaN and the whole frame non-finite.
+glm::vec2 checkedJitter(glm::vec2 jitter, const std::string& source,
+                        const ErrorContext& context = {});
 
 }  // namespace taa

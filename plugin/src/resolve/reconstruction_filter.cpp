@@ -35,7 +35,9 @@ std::array<float, 9> reconstructionWeights(Reconstruction filter, glm::vec2 jitt
       sum += w;
     }
   }
-  if (std::abs(sum) <= 1e-4) {
+  // A jitter far outside the pixel leaves no weight; a non-finite one (refused where jitter
+  // enters: resolve/jitter.h) would leave NaN. Either way the centre sample stands alone.
+  if (!(std::abs(sum) > 1e-4)) {
     weights = {};
     weights[4] = 1.0f;
     return weights;

@@ -1,6 +1,7 @@
 #include "resolve/resolver.h"
 
 #include <array>
+#include <limits>
 #include <optional>
 #include <string>
 #include <utility>
@@ -115,6 +116,7 @@ struct Resolver::Impl {
   // Programs and the bracket's GL resources, rebuilt when programKey changes.
   std::string programKey;
   gl::Program toWorkingProgram, resolveProgram, outputProgram;
+  color::OcioBracket::Range workingRange{};
   color::OcioGpuResources toWorkingLuts, fromWorkingLuts;
 
   // Per-size resources, rebuilt when the frame size changes. Texture formats: the current
@@ -175,6 +177,7 @@ struct Resolver::Impl {
     outputProgram = std::move(newOutput);
     toWorkingLuts = std::move(newToWorkingLuts);
     fromWorkingLuts = std::move(newFromWorking);
+    workingRange = bracket.workingRange();
     programKey = key;
   }
 
@@ -259,6 +262,14 @@ struct Resolver::Impl {
     p.set("uDepthTolerance", options.depthTolerance);
     p.set("uThinHold", options.thinFeatureHold);
     p.set("uThinHoldSpeed", options.thinFeatureHoldSpeed);
+    p.set("uWorkingRange", workingRange.lo, workingRange.hi);
+  }
+
+  // Whichever pass writes the output clamps it to what `type` can hold (glsl/finite_range.glsl).
+  void setOutputLimit(SampleType type) {
+    const float limit = type == SampleType::Half ? 65504.0f : std::numeric_limits<float>::max();
+    resolveProgram.set("uOutputLimit", limit);
+    outputProgram.set("uOutputLimit", limit);
   }
 
   void toWorkingPass() {
@@ -317,6 +328,7 @@ struct Resolver::Impl {
     if (input.depth) depth[currentDepth].upload(input.depth.data, 1, glType(input.depth.type));
     const bool useCamera = hasHistory && input.camera && previousCamera;
     setResolveUniforms(input, useCamera);
+    setOutputLimit(outputType);
 
     const int target = 1 - latest;
     toWorkingPass();

@@ -10,6 +10,7 @@
 #include "io/frame_reader.h"
 #include "io/sequence_pattern.h"
 #include "io/sequence_scan.h"
+#include "io/stale_temp_files.h"
 #include "resolve/jitter.h"
 #include "resolve/option_registry.h"
 #include "resolve/frame_queues.h"
@@ -17,6 +18,7 @@
 #include "resolve/window_plan.h"
 #include "resolve/window_resolver.h"
 #include "taa/error.h"
+#include "util/interruption.h"
 
 namespace taa {
 namespace {
@@ -99,7 +101,8 @@ glm::vec2 jitterOf(const SequenceJob& job, const io::FrameData& data,
                 {data.colorPath, data.frame, ""});
   }
   const float* xy = static_cast<const float*>(value->data());
-  return glm::vec2(xy[0], xy[1]);
+  return checkedJitter(glm::vec2(xy[0], xy[1]), "the header attribute " + job.jitterAttribute,
+                       {data.colorPath, data.frame, ""});
 }
 
 // "name=value; ..." for every resolve option, plus the jitter source when not the options'.
@@ -147,6 +150,18 @@ std::vector<int> availableInputFrames(const io::AovLayout& layout) {
 void validateSequenceJob(const SequenceJob& job) {
   if (job.frames.empty()) throw Error("no frames to resolve", {job.layout.color.pattern});
   if (job.outputPattern.empty()) throw Error("no output given (use -o PATTERN)");
+  for (std::size_t i = 1; i < job.frames.size(); ++i) {
+    if (job.frames[i] <= job.frames[i - 1]) {  // e.g. --frames 5-1: history needs frame - 1 first
+      throw Error("frames must ascend: " + std::to_string(job.frames[i]) + " follows " +
+                      std::to_string(job.frames[i - 1]) +
+                      " (history is built forward in time; list the frames in ascending order)",
+                  {job.layout.color.pattern, job.frames[i], ""});
+    }
+  }
+  if (job.ioThreads < 0 || job.ioThreads > kMaxIoThreads) {
+    throw Error("threads must be 0 to " + std::to_string(kMaxIoThreads) + ", got " +
+                std::to_string(job.ioThreads));
+  }
   if (job.frames.size() > 1 && !io::hasFramePlaceholder(job.outputPattern)) {
     throw Error("output pattern has no frame number placeholder (#, @ or %0Nd) but " +
                     std::to_string(job.frames.size()) + " frames are resolved",
@@ -237,8 +252,14 @@ struct JobRun {
     io::ExtraChannels extra = passthroughWithout(data.passthrough, write.rgbaNames);
     if (!debug.names.empty()) io::appendExtraChannels(extra, debug);
     return [path = io::expandFramePattern(job.outputPattern, data.frame),
-            output = std::move(output), spec = std::move(spec), this,
-            extra = std::move(extra)] { io::writeExrAtomic(path, output, spec, write, extra); };
+            output = std::move(output), spec = std::move(spec), this, extra = std::move(extra),
+            frame = data.frame] {
+      try {
+        io::writeExrAtomic(path, output, spec, write, extra);
+      } catch (const Error& e) {  // the writer knows the path, not the frame
+        throw Error(e.description(), {e.context().file, frame, e.context().channel});
+      }
+    };
   }
 
   FrameReport reportOf(const io::FrameData& data, int index) const {
@@ -248,8 +269,24 @@ struct JobRun {
     report.frame = data.frame;
     report.inputPath = data.colorPath;
     report.outputPath = io::expandFramePattern(job.outputPattern, data.frame);
+    report.motionPath = data.motionPath;
+    report.width = data.color.width();
+    report.height = data.color.height();
     report.nonFiniteColorValues = data.nonFiniteColorValues;
+    report.nonFiniteMotionValues = data.nonFiniteMotionValues;
+    const SampleType outputType = io::outputSampleType(write, data.colorSpec);
+    report.clampedColorValues = outputType == SampleType::Half ? data.colorValuesBeyondHalf : 0;
     return report;
+  }
+
+  // Before each frame: a stop asked for (SIGINT/SIGTERM in taatool) ends the job here, once the
+  // frames in flight are written.
+  void stopIfAsked(WriteBehind& writes, int done) const {
+    if (!callbacks.stopRequested || !callbacks.stopRequested()) return;
+    writes.finish();
+    throw Stopped("stopped after " + std::to_string(done) + " of " +
+                  std::to_string(job.frames.size()) +
+                  " frames; those are written completely and nothing partial is left");
   }
 };
 
@@ -263,20 +300,26 @@ void runHistory(JobRun& run, gl::Context& context) {
   WriteBehind writes(job.ioThreads, [&](int index) {
     if (run.callbacks.frameDone) run.callbacks.frameDone(reports[std::size_t(index)]);
   });
+  int lastWidth = 0, lastHeight = 0;
   for (int index = 0; index < int(job.frames.size()); ++index) {
+    run.stopIfAsked(writes, index);
     const int frame = job.frames[std::size_t(index)];
-    // Motion vectors point to frame - 1: any other predecessor makes history meaningless.
-    const bool historyReset = index == 0 || job.frames[std::size_t(index) - 1] != frame - 1 ||
-                              job.resetFrames.count(frame) > 0;
-    if (historyReset) resolver.resetHistory();
     const io::FrameData data = reads.next();
+    FrameReport& report = reports[std::size_t(index)] = run.reportOf(data, index);
+    // Motion vectors point to frame - 1: any other predecessor makes history meaningless. The
+    // resolver restarts history at a new size too; the report says so.
+    report.sizeChanged = index > 0 && (report.width != lastWidth || report.height != lastHeight);
+    report.historyReset = index == 0 || job.frames[std::size_t(index) - 1] != frame - 1 ||
+                          job.resetFrames.count(frame) > 0 || report.sizeChanged;
+    lastWidth = report.width;
+    lastHeight = report.height;
+    if (report.historyReset) resolver.resetHistory();
+    if (run.callbacks.frameRead) run.callbacks.frameRead(report);
     const ResolveInput input = run.inputOf(data);
     // Read back in the type the file gets: a half output goes from GL to the encoder as is.
     TypedImage output = run.resolveNaming(data, [&] {
       return resolver.resolve(input, io::outputSampleType(run.write, data.colorSpec));
     });
-    FrameReport& report = reports[std::size_t(index)] = run.reportOf(data, index);
-    report.historyReset = historyReset;
     report.cutDetected = resolver.lastFrameWasCut();
     io::ExtraChannels debug;
     if (job.debugLayers) debug = debugChannels(resolver.lastDebug(), data.nonFiniteMask);
@@ -319,6 +362,7 @@ void runWindow(JobRun& run, gl::Context& context) {
   std::vector<int> inRing;
 
   for (int index = 0; index < int(outputs.size()); ++index) {
+    run.stopIfAsked(writes, index);
     const int frame = outputs[std::size_t(index)];
     const FrameWindow window = plan.windows.at(frame);
     for (auto it = inRing.begin(); it != inRing.end();) {
@@ -354,12 +398,13 @@ void runWindow(JobRun& run, gl::Context& context) {
     }
     io::FrameData data = std::move(waiting.at(frame));
     waiting.erase(frame);
+    FrameReport& report = reports[std::size_t(index)] = run.reportOf(data, index);
+    report.historyReset = plan.shotStarts.count(frame) > 0;
+    if (run.callbacks.frameRead) run.callbacks.frameRead(report);
     TypedImage output = run.resolveNaming(data, [&] {
       return resolver.resolve(frame, window.first, window.last,
                               io::outputSampleType(run.write, data.colorSpec));
     });
-    FrameReport& report = reports[std::size_t(index)] = run.reportOf(data, index);
-    report.historyReset = plan.shotStarts.count(frame) > 0;
     io::ExtraChannels debug;
     if (job.debugLayers) debug = windowDebugChannels(resolver.lastDebug(), data.nonFiniteMask);
     writes.push(run.writeOf(data, std::move(output), std::move(debug)), index);
@@ -371,6 +416,11 @@ void runWindow(JobRun& run, gl::Context& context) {
 
 void runSequenceJob(const SequenceJob& job, const JobCallbacks& callbacks) {
   validateSequenceJob(job);
+  const io::StaleTemporaries stale = io::removeStaleTemporaries(job.outputPattern);
+  if (callbacks.log) {
+    for (const auto& path : stale.removed) callbacks.log("removed a dead run's temporary " + path);
+    for (const auto& why : stale.failed) callbacks.log("cannot remove a dead run's file " + why);
+  }
   JobRun run(job, callbacks);
   auto context = gl::Context::create(job.backend, callbacks.log);
   if (job.resolve.mode == ResolveMode::Window) {

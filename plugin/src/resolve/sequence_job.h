@@ -44,9 +44,12 @@ struct SequenceJob {
   // red channel's prefix + "A"), so the output can replace the input in a comp.
   std::vector<std::string> outputChannels;
   // Frames read ahead and written behind on worker threads while the GL thread resolves (0: all
-  // on the calling thread, one step after another). Output is identical either way.
+  // on the calling thread, one step after another). Output is identical either way. Each frame
+  // in flight holds its AOVs in memory: at most kMaxIoThreads.
   int ioThreads = 2;
 };
+
+inline constexpr int kMaxIoThreads = 16;
 
 // The output's 4 color channel names for `job` (see SequenceJob::outputChannels).
 std::vector<std::string> outputChannelNames(const SequenceJob& job);
@@ -56,27 +59,43 @@ struct FrameReport {
   int count = 0;  // job.frames.size()
   int frame = 0;
   std::string inputPath, outputPath;
-  int nonFiniteColorValues = 0;
-  bool historyReset = false;  // the frame started a new history (first frame, gap, reset frame)
+  int nonFiniteColorValues = 0;   // NaN/Inf colour values set to 0
+  int nonFiniteMotionValues = 0;  // NaN/Inf motion values (before or after conversion) set to 0
+  int clampedColorValues = 0;     // float colour beyond +-65504 for a half output (results
+                                  // beyond it are clamped)
+  std::string motionPath;         // where motion came from (empty: no motion)
+  int width = 0, height = 0;      // the colour data window's size
+  bool sizeChanged = false;   // the size differs from the previous frame's: history restarted
+  bool historyReset = false;  // the frame started a new history (first frame, gap, reset frame,
+                              // size change)
   bool cutDetected = false;   // cut detection reset history on this frame
 };
 
 struct JobCallbacks {
   gl::LogSink log;                                      // informational messages
+  // After a frame is read, before it is resolved, with what its input changed silently
+  // (non-finite values, clamped values, a new size). Throwing stops the job there: nothing of
+  // that frame is written (taatool --strict).
+  std::function<void(const FrameReport&)> frameRead;
   std::function<void(const FrameReport&)> frameDone;   // after each frame is written
+  // Polled before each frame: true stops the job once the frames in flight are written, with
+  // util/interruption.h's Stopped (SIGINT/SIGTERM in taatool, KeyboardInterrupt in Python).
+  std::function<bool()> stopRequested;
 };
 
 // Frames of `layout` whose every input file (color, and depth and motion where they are files
 // of their own) exists, ascending.
 std::vector<int> availableInputFrames(const io::AovLayout& layout);
 
-// Checks the job before any work: frames present, every input file of every frame exists,
-// the output pattern can name each frame distinctly and never names an input file.
+// Checks the job before any work: frames present and ascending (history runs forward), every
+// input file of every frame exists, the output pattern can name each frame distinctly and never
+// names an input file, ioThreads within [0, kMaxIoThreads].
 // Throws taa::Error naming the file, frame and channel at fault.
 void validateSequenceJob(const SequenceJob& job);
 
-// Validates, creates the GL context and runs the job. Throws taa::Error on failure; frames
-// written before the failure are complete files, the failing frame leaves nothing behind.
+// Validates, removes temporaries of dead writers beside the output (io/stale_temp_files.h; each
+// logged), creates the GL context and runs the job. Throws taa::Error on failure (Stopped on a
+// stop request); frames written before are complete files, the failing frame leaves nothing.
 void runSequenceJob(const SequenceJob& job, const JobCallbacks& callbacks = {});
 
 }  // namespace taa

@@ -1,0 +1,12 @@
+// Checks of a job's outputs on disk for steps that resume it (the farm step, samples/farm):
+// taa.check_output (is a frame complete?), taa.remove_stale_temporaries and
+// taa.farm_scratch_prefix (temporaries of dead runs).
+#pragma once
+
+#include <pybind11/pybind11.h>
+
+namespace taa::python {
+
+void registerOutputChecks(pybind11::module_& module);
+
+}  // namespace taa::python
