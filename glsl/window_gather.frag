@@ -56,6 +56,8 @@ uniform mat4 uFromTargetOffset[MAX_SOURCES];
 
 uniform float uSigma;
 uniform float uFalloff;
+uniform bool uTaper;
+uniform int uRadius;  // K
 uniform float uColourTolerance;
 uniform float uDepthTolerance;
 uniform float uReconstructionWeight;
@@ -267,7 +269,7 @@ void main() {
     int offsetFrames = uSourceOffset[k];
     int layer = gSourceLayer;
     vec2 jitter = gSourceJitter;
-    float frameWeight = temporalWeight(offsetFrames, uFalloff);
+    float frameWeight = temporalWeight(offsetFrames, uFalloff, uTaper, uRadius);
     gSourceWeight = 0.0;
     gSourceSum = vec4(0.0);
     gSourceLumaSquares = 0.0;

@@ -6,11 +6,20 @@ float spatialWeight(vec2 offset, float sigma) {
   return exp(-dot(offset, offset) / (2.0 * sigma * sigma));
 }
 
-// Weight by distance in frames: 1 / (1 + (frames / falloff)^2); falloff 0: every frame alike.
-float temporalWeight(int frames, float falloff) {
-  if (falloff <= 0.0) return 1.0;
-  float x = float(frames) / falloff;
-  return 1.0 / (1.0 + x * x);
+// Weight by distance in frames: 1 / (1 + (frames / falloff)^2) (falloff 0: 1), times, with
+// `taper`, a Hann window over the K frames each side, cos^2(pi/2 frames / (K + 1)): frames
+// enter and leave a moving window gently, so the output does not step when they do.
+float temporalWeight(int frames, float falloff, bool taper, int radius) {
+  float weight = 1.0;
+  if (falloff > 0.0) {
+    float x = float(frames) / falloff;
+    weight = 1.0 / (1.0 + x * x);
+  }
+  if (taper) {
+    float c = cos(1.5707963 * float(frames) / float(radius + 1));
+    weight *= c * c;
+  }
+  return weight;
 }
 
 // How well one source frame's samples agree with the resolved frame's own, as a weight for all
@@ -19,14 +28,15 @@ float temporalWeight(int frames, float falloff) {
 // detail does not. `difference` is the luma of the source's weighted mean minus t's; its
 // expected spread comes from the within-frame variance of the samples (texture and aliasing
 // inside the pixel's footprint) and the weights (about the number of samples) of both means.
-// 1 within `tolerance` standard deviations (plus a floor for flat regions), falling linearly
-// to 0 at twice that; tolerance 0 turns the test off.
+// 1 within `tolerance` standard deviations (plus a small floor, 1% and 0.002, for flat
+// regions; larger floors let a moving shadow's frames through), falling linearly to 0 at twice
+// that; tolerance 0 turns the test off.
 float agreementWeight(float difference, float withinVariance, float sourceWeight,
                       float targetWeight, float targetLuma, float tolerance) {
   if (tolerance <= 0.0) return 1.0;
   float spread = sqrt(withinVariance * (1.0 / max(sourceWeight, 0.05) +
                                         1.0 / max(targetWeight, 0.05)));
-  float limit = tolerance * spread + 0.01 + 0.05 * abs(targetLuma);
+  float limit = tolerance * spread + 0.002 + 0.01 * abs(targetLuma);
   return clamp(2.0 - abs(difference) / limit, 0.0, 1.0);
 }
 

@@ -64,6 +64,9 @@ struct WindowOptions {
   float sigma = 0.35f;
   // Frames: temporal weight 1 / (1 + (distance / falloff)^2); 0 weighs every frame alike.
   float falloff = 0.0f;
+  // Also weigh frames by a Hann taper over the window, cos^2(pi/2 distance / (K + 1)): frames
+  // enter and leave the moving window gently, so the output does not step when they do.
+  bool taper = false;
   // Colour consistency, in standard deviations: a carried sample farther than this from the
   // weighted mean of what the pixel gathered before it (its own frame's samples and those of
   // the frames nearer in time; YCoCg, working space, plus a small floor) loses its weight, so

@@ -148,6 +148,21 @@ std::vector<Entry> makeEntries() {
       {"window-falloff", "Mode", "", "", "window mode: frames, weight 1/(1+(distance/falloff)^2) "
        "by distance in time (0: every frame alike)"},
       0.0f, kNoLimit, &WindowOptions::falloff));
+  {
+    Entry e{{"window-taper", "Mode", "on|off", "", "window mode: weigh frames by a Hann taper "
+             "over the window, so frames enter and leave it gently (steadier output)"}, {}, {}};
+    e.set = [](ResolveOptions& o, const std::string& v) {
+      if (v == "on" || v == "1") {
+        o.window.taper = true;
+      } else if (v == "off" || v == "0") {
+        o.window.taper = false;
+      } else {
+        reject("window-taper", v, "on or off");
+      }
+    };
+    e.get = [](const ResolveOptions& o) { return std::string(o.window.taper ? "on" : "off"); };
+    entries.push_back(e);
+  }
   entries.push_back(windowNumberOption(
       {"window-colour-tolerance", "Mode", "", "", "window mode: standard deviations a carried "
        "sample may stray from what the pixel gathered from nearer frames; smaller keeps moving "

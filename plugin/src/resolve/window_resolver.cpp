@@ -1,6 +1,7 @@
 #include "resolve/window_resolver.h"
 
 #include <array>
+#include <cmath>
 #include <map>
 #include <optional>
 #include <string>
@@ -412,6 +413,8 @@ struct WindowResolver::Impl {
     const gl::Program& p = gatherPrograms[chains ? 1 : 0];
     p.set("uSigma", options.window.sigma);
     p.set("uFalloff", options.window.falloff);
+    p.set("uTaper", options.window.taper ? 1 : 0);
+    p.set("uRadius", options.window.radius);
     p.set("uColourTolerance", options.window.colourTolerance);
     p.set("uDepthTolerance", options.depthTolerance);
     p.set("uReconstructionWeight", options.window.reconstructionWeight);
