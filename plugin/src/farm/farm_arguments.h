@@ -10,9 +10,12 @@
 
 namespace taa::farm {
 
-// History mode's pre-roll when --preroll is not given: chosen from the measured difference to a
-// whole-shot run (README "Render farm").
-inline constexpr int kDefaultPreroll = 16;
+// History mode's pre-roll when --preroll is not given. History forgets at the blend rate (0.04 a
+// frame by default), so a chunk's history started 128 frames before it differs from the
+// whole-shot run's by at most 0.00221 in display values (Reinhard x/(1+x)) on the slowest scene
+// measured, below one 8-bit step (1/255); 96 frames left 0.012 (README "Render farm",
+// taa-preroll-error).
+inline constexpr int kDefaultPreroll = 128;
 
 enum class Scheduler { Slurm, OpenCue, Deadline };
 
