@@ -103,15 +103,16 @@ int main(int argc, char** argv) {
                        chunked),
             log);
       }
-      double maxAbs = 0, sumAbs = 0, sumSquares = 0, worstPsnr = std::numeric_limits<double>::infinity();
+      constexpr double kInfinity = std::numeric_limits<double>::infinity();
+      double maxAbs = 0, sumAbs = 0, sumSquares = 0, worstPsnr = kInfinity;
       long long values = 0;
       int differing = 0;
+      auto displayValues = [](const fs::path& folder, int frame) {
+        const std::string path = io::expandFramePattern((folder / "r.####.exr").string(), frame);
+        return yardstick::tonemap(yardstick::readExr(path).image);
+      };
       for (int frame : frames) {
-        const Image a = yardstick::tonemap(
-            yardstick::readExr(io::expandFramePattern((whole / "r.####.exr").string(), frame)).image);
-        const Image b = yardstick::tonemap(
-            yardstick::readExr(io::expandFramePattern((chunked / "r.####.exr").string(), frame))
-                .image);
+        const Image a = displayValues(whole, frame), b = displayValues(chunked, frame);
         double frameMax = 0;
         for (std::size_t i = 0; i < a.pixels.size(); ++i) {
           const double d = std::abs(double(a.pixels[i]) - b.pixels[i]);
@@ -125,7 +126,7 @@ int main(int argc, char** argv) {
         worstPsnr = std::min(worstPsnr, yardstick::psnr(a, b));
       }
       const double mse = sumSquares / double(values);
-      const double psnr = mse > 0 ? 10 * std::log10(1 / mse) : std::numeric_limits<double>::infinity();
+      const double psnr = mse > 0 ? 10 * std::log10(1 / mse) : kInfinity;
       std::printf("| %s | %d | %.5f | %.7f | %.1f | %.1f | %d of %zu |\n", args.label.c_str(),
                   preroll, maxAbs, sumAbs / double(values), psnr, worstPsnr, differing,
                   frames.size());

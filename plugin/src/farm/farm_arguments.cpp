@@ -55,14 +55,14 @@ std::string oneLine(const std::string& option, const std::string& text) {
 
 FarmArguments parseFarmArguments(const std::vector<std::string>& argv) {
   FarmArguments args;
-  if (argv.empty()) throw UsageError("no verb given: submit, run or status (see taa-farm --help)");
+  if (argv.empty()) throw UsageError("no verb given: submit, run or status");
   if (argv[0] == "--help" || argv[0] == "-h" || argv[0] == "help") {
     args.help = true;
     return args;
   }
   args.verb = argv[0] == "verify" ? "status" : argv[0];
   if (args.verb != "submit" && args.verb != "run" && args.verb != "status") {
-    throw UsageError("unknown verb \"" + argv[0] + "\": submit, run or status (see taa-farm --help)");
+    throw UsageError("unknown verb \"" + argv[0] + "\": submit, run or status");
   }
 
   std::set<std::string> given;
@@ -76,7 +76,8 @@ FarmArguments parseFarmArguments(const std::vector<std::string>& argv) {
          args.prerollGiven = true;
        }},
       {"--scheduler", [&](const std::string& v) { args.scheduler = parseScheduler(v); }},
-      {"--partition", [&](const std::string& v) { args.slurm.partition = oneLine("--partition", v); }},
+      {"--partition",
+       [&](const std::string& v) { args.slurm.partition = oneLine("--partition", v); }},
       {"--time", [&](const std::string& v) { args.slurm.time = oneLine("--time", v); }},
       {"--mem", [&](const std::string& v) { args.slurm.mem = oneLine("--mem", v); }},
       {"--cpus-per-task",
@@ -157,7 +158,8 @@ FarmArguments parseFarmArguments(const std::vector<std::string>& argv) {
 namespace taa::farm {
 
 std::string farmHelpText() {
-  return R"help(taa-farm -- taa's resolve as a render-farm step (taa )help" TAA_VERSION_STRING R"help()
+  return R"help(taa-farm -- taa's resolve as a render-farm step (taa )help"
+         TAA_VERSION_STRING R"help()
 
 Usage:
   taa-farm submit --chunk N [scheduler options] TAATOOL_ARGUMENTS
