@@ -100,9 +100,10 @@ class SlurmCluster:
         ctld_port, slurmd_port = free_ports(2)
         for folder in ("state", "spool"):
             os.makedirs(self.path(folder))
-        config = f"""# taa-farm's test cluster: one node, this host, its own ports and folders.
+        config = f"""# taa-farm's test cluster: one node, this host (reached on 127.0.0.1, whether or not its name
+# resolves), its own ports and folders.
 ClusterName=taatest
-SlurmctldHost={host}
+SlurmctldHost={host}(127.0.0.1)
 SlurmctldPort={ctld_port}
 SlurmdPort={slurmd_port}
 SlurmUser=root
@@ -126,7 +127,7 @@ MinJobAge=3600
 JobCompType=jobcomp/none
 AccountingStorageType=accounting_storage/none
 JobAcctGatherType=jobacct_gather/none
-NodeName={host} CPUs={os.cpu_count()} RealMemory=1000 State=UNKNOWN
+NodeName={host} NodeAddr=127.0.0.1 CPUs={os.cpu_count()} RealMemory=1000 State=UNKNOWN
 PartitionName=taa Nodes={host} Default=YES MaxTime=INFINITE State=UP
 """
         with open(self.path("slurm.conf"), "w") as conf:
