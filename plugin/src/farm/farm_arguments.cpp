@@ -177,7 +177,7 @@ prints the job id on stdout.
   --dry-run                print the batch script instead of submitting it
   --partition P, --time T, --mem M, --cpus-per-task C, --job-name NAME
                            passed to sbatch
-  --sbatch-arg OPTION      any other sbatch option, one per flag: --sbatch-arg=--qos=high
+  --sbatch-arg OPTION      any other sbatch option, one per flag: --sbatch-arg --qos=high
   --log-dir DIR            tasks' logs, DIR/taa-farm-JOBID_TASK.log (default: this folder)
   --scheduler opencue|deadline
                            print the job for that scheduler (not submitted): the same
