@@ -6,9 +6,10 @@
 
 namespace taa::test {
 
-// Empty when the two files are byte-identical (taa writes the input's header and no time of its
-// own, and its ZIP is deterministic, so equal frames make equal files). Else what differs: the
-// parts' channels, pixel types, windows, header attributes or pixels.
+// Empty when the two EXRs hold the same frame: every part's channels, pixel types, windows and
+// pixels bit for bit, and every header attribute but DateTime, which OpenImageIO's EXR writer
+// sets to the time of writing when the input has none (taa copies the input's when it has one;
+// then equal frames make byte-identical files). Else what differs.
 std::string frameDifference(const std::string& a, const std::string& b);
 
 // Largest and mean absolute difference over the RGB of the first part, after Reinhard x/(1+x)
