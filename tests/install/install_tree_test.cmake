@@ -30,7 +30,7 @@ run(WHAT "cmake --install" COMMAND ${CMAKE_COMMAND} --install ${BUILD_DIR} --pre
 unset(ENV{DESTDIR})
 
 set(bundle ${stage}${OFX_PLUGIN_DIR}/TAAResolve.ofx.bundle/Contents/${OFX_ARCHITECTURE}/TAAResolve.ofx)
-set(binaries ${root}/bin/taatool ${root}/${LIB_DIR}/libtaa.so.0 ${bundle})
+set(binaries ${root}/bin/taatool ${root}/bin/taa-farm ${root}/${LIB_DIR}/libtaa.so.0 ${bundle})
 foreach(path ${binaries} ${root}/include/taa/taa.h ${root}/${LIB_DIR}/libtaa.so
              ${root}/${LIB_DIR}/cmake/taa/taaConfig.cmake)
   require_file(${path})
@@ -52,6 +52,7 @@ foreach(binary ${binaries})
 endforeach()
 
 run(WHAT "installed taatool" COMMAND ${root}/bin/taatool --help)
+run(WHAT "installed taa-farm" COMMAND ${root}/bin/taa-farm --help)
 
 # The bundle loaded from where hosts look, by the OpenFX test host.
 set(ENV{OFX_PLUGIN_PATH} ${stage}${OFX_PLUGIN_DIR})

@@ -1,5 +1,5 @@
 // Whether an output frame on disk is complete, for steps that resume a job and redo only what is
-// missing (the farm step, samples/farm). Outputs are renamed into place whole, but a file can be
+// missing (taa-farm, farm/run_chunk.cpp). Outputs are renamed into place whole, but a file can be
 // cut short afterwards (a copy onto a full disk, a sync that died) and its header still opens:
 // only reading every pixel of every part shows it. Frames taa wrote also carry its metadata,
 // taa:version and taa:options (the resolve options, resolve/sequence_job.cpp).

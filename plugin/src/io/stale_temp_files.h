@@ -1,6 +1,7 @@
 // Temporary files that outlive their writer. Outputs are written into a temporary beside the
-// target and renamed (io/exr_writer.h); the farm step resolves into a scratch folder beside the
-// output (samples/farm). A writer killed before its rename (SIGKILL, a node that lost power)
+// target and renamed (io/exr_writer.h); a farm step of one's own may resolve into a scratch folder
+// beside the output (taa.farm_scratch_prefix in Python; taa-farm needs none: its pre-roll is
+// never written). A writer killed before its rename (SIGKILL, a node that lost power)
 // leaves them behind. Their names carry the writer's host and process id, so a later run over
 // the same output can tell the dead ones from those of a run still going:
 //   .<file name>.taa-tmp-<host>-<pid>-<n>.exr   a frame being written

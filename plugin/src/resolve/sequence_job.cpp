@@ -25,22 +25,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Every input path of one frame, with the AOV it serves (for error messages).
-std::vector<std::pair<std::string, std::string>> inputPaths(const io::AovLayout& layout,
-                                                            int frame) {
-  const std::string colorPath = io::expandFramePattern(layout.color.pattern, frame);
-  std::vector<std::pair<std::string, std::string>> paths = {{colorPath, "color"}};
-  auto add = [&](const std::optional<io::AovSource>& aov, const char* name) {
-    if (!aov) return;
-    paths.emplace_back(aov->pattern.empty() ? colorPath
-                                            : io::expandFramePattern(aov->pattern, frame),
-                       name);
-  };
-  add(layout.depth, "depth");
-  add(layout.motion, "motion");
-  return paths;
-}
-
 // Paths compare equal when they name the same file, whether or not it exists yet.
 std::string canonical(const std::string& path) {
   std::error_code ec;
@@ -105,8 +89,9 @@ glm::vec2 jitterOf(const SequenceJob& job, const io::FrameData& data,
                        {data.colorPath, data.frame, ""});
 }
 
-// "name=value; ..." for every resolve option, plus the jitter source when not the options'.
-std::string optionsAttribute(const SequenceJob& job) {
+}  // namespace
+
+std::string outputOptionsAttribute(const SequenceJob& job) {
   std::string text;
   for (const OptionInfo& option : resolveOptionList()) {
     text += (text.empty() ? "" : "; ") + option.name + "=" +
@@ -120,7 +105,18 @@ std::string optionsAttribute(const SequenceJob& job) {
   return text;
 }
 
-}  // namespace
+std::vector<InputFile> frameInputFiles(const io::AovLayout& layout, int frame) {
+  const std::string colorPath = io::expandFramePattern(layout.color.pattern, frame);
+  std::vector<InputFile> files = {{colorPath, "color"}};
+  auto add = [&](const std::optional<io::AovSource>& aov, const char* name) {
+    if (!aov) return;
+    files.push_back({aov->pattern.empty() ? colorPath : io::expandFramePattern(aov->pattern, frame),
+                     name});
+  };
+  add(layout.depth, "depth");
+  add(layout.motion, "motion");
+  return files;
+}
 
 std::vector<std::string> outputChannelNames(const SequenceJob& job) {
   if (!job.outputChannels.empty()) return job.outputChannels;
@@ -138,9 +134,9 @@ std::vector<int> availableInputFrames(const io::AovLayout& layout) {
   std::vector<int> frames;
   for (int frame : io::scanExistingFrames(layout.color.pattern)) {
     bool complete = true;
-    for (const auto& [path, aov] : inputPaths(layout, frame)) {
+    for (const InputFile& input : frameInputFiles(layout, frame)) {
       std::error_code ec;
-      complete = complete && fs::is_regular_file(path, ec);
+      complete = complete && fs::is_regular_file(input.path, ec);
     }
     if (complete) frames.push_back(frame);
   }
@@ -156,6 +152,16 @@ void validateSequenceJob(const SequenceJob& job) {
                       std::to_string(job.frames[i - 1]) +
                       " (history is built forward in time; list the frames in ascending order)",
                   {job.layout.color.pattern, job.frames[i], ""});
+    }
+  }
+  for (int frame : job.prerollFrames) {
+    if (job.resolve.mode == ResolveMode::Window) {
+      throw Error("pre-roll frames are for the history resolve: a window frame needs none",
+                  {job.layout.color.pattern, frame, ""});
+    }
+    if (std::find(job.frames.begin(), job.frames.end(), frame) == job.frames.end()) {
+      throw Error("pre-roll frame " + std::to_string(frame) + " is not among the frames resolved",
+                  {job.layout.color.pattern, frame, ""});
     }
   }
   if (job.ioThreads < 0 || job.ioThreads > kMaxIoThreads) {
@@ -183,15 +189,16 @@ void validateSequenceJob(const SequenceJob& job) {
   }
   std::set<std::string> inputs;
   for (int frame : job.frames) {
-    for (const auto& [path, aov] : inputPaths(job.layout, frame)) {
+    for (const InputFile& input : frameInputFiles(job.layout, frame)) {
       std::error_code ec;
-      if (!fs::is_regular_file(path, ec)) {
-        throw Error("missing input frame", {path, frame, aov});
+      if (!fs::is_regular_file(input.path, ec)) {
+        throw Error("missing input frame", {input.path, frame, input.aov});
       }
-      inputs.insert(canonical(path));
+      inputs.insert(canonical(input.path));
     }
   }
   for (int frame : job.frames) {
+    if (job.prerollFrames.count(frame)) continue;  // never written
     const std::string output = io::expandFramePattern(job.outputPattern, frame);
     if (inputs.count(canonical(output))) {
       throw Error("output would overwrite an input file", {output, frame});
@@ -215,7 +222,7 @@ struct JobRun {
     cameras = {job.ndc, sidecar ? &*sidecar : nullptr};
     write = job.write;
     write.rgbaNames = outputChannelNames(job);
-    options = optionsAttribute(job);
+    options = outputOptionsAttribute(job);
   }
 
   io::FrameData read(int frame) const { return io::readFrame(job.layout, frame, cameras); }
@@ -268,7 +275,8 @@ struct JobRun {
     report.count = int(job.frames.size());
     report.frame = data.frame;
     report.inputPath = data.colorPath;
-    report.outputPath = io::expandFramePattern(job.outputPattern, data.frame);
+    report.preroll = job.prerollFrames.count(data.frame) > 0;
+    if (!report.preroll) report.outputPath = io::expandFramePattern(job.outputPattern, data.frame);
     report.motionPath = data.motionPath;
     report.width = data.color.width();
     report.height = data.color.height();
@@ -321,6 +329,10 @@ void runHistory(JobRun& run, gl::Context& context) {
       return resolver.resolve(input, io::outputSampleType(run.write, data.colorSpec));
     });
     report.cutDetected = resolver.lastFrameWasCut();
+    if (report.preroll) {  // history only; a no-op in the queue keeps frameDone in order
+      writes.push([] {}, index);
+      continue;
+    }
     io::ExtraChannels debug;
     if (job.debugLayers) debug = debugChannels(resolver.lastDebug(), data.nonFiniteMask);
     writes.push(run.writeOf(data, std::move(output), std::move(debug)), index);

@@ -35,6 +35,9 @@ struct SequenceJob {
   ResolveOptions resolve;
   gl::Backend backend = gl::Backend::Auto;
   std::set<int> resetFrames;   // frames that start a new history (cuts)
+  // History mode: frames of `frames` resolved only to build the history of later ones, never
+  // written (a farm chunk's read-only pre-roll, farm/chunk_plan.h). Window mode: none.
+  std::set<int> prerollFrames;
   bool debugLayers = false;    // write the resolver's diagnostics as extra layers
   NdcConvention ndc = NdcConvention::ZeroOneYDown;  // of the headers' worldToNDC
   JobJitterSource jitterSource = JobJitterSource::Options;
@@ -69,6 +72,7 @@ struct FrameReport {
   bool historyReset = false;  // the frame started a new history (first frame, gap, reset frame,
                               // size change)
   bool cutDetected = false;   // cut detection reset history on this frame
+  bool preroll = false;       // resolved for history only, nothing written (prerollFrames)
 };
 
 struct JobCallbacks {
@@ -83,13 +87,28 @@ struct JobCallbacks {
   std::function<bool()> stopRequested;
 };
 
+// One input file of a frame and the AOV it serves ("color", "depth", "motion").
+struct InputFile {
+  std::string path, aov;
+};
+
+// Every input file of `frame`: color, then depth and motion (the color file again where they are
+// its channels).
+std::vector<InputFile> frameInputFiles(const io::AovLayout& layout, int frame);
+
 // Frames of `layout` whose every input file (color, and depth and motion where they are files
 // of their own) exists, ascending.
 std::vector<int> availableInputFrames(const io::AovLayout& layout);
 
+// The output files' taa:options attribute for `job`: every resolve option as "name=value; ...",
+// and the jitter source when it is not the options'. io::checkOutputComplete compares it, so a
+// frame resolved with other options is not taken for this job's.
+std::string outputOptionsAttribute(const SequenceJob& job);
+
 // Checks the job before any work: frames present and ascending (history runs forward), every
 // input file of every frame exists, the output pattern can name each frame distinctly and never
-// names an input file, ioThreads within [0, kMaxIoThreads].
+// names an input file, ioThreads within [0, kMaxIoThreads], pre-roll frames only in history mode
+// and among the frames.
 // Throws taa::Error naming the file, frame and channel at fault.
 void validateSequenceJob(const SequenceJob& job);
 
