@@ -12,6 +12,7 @@ packages=(
   libgl-dev libegl-dev libegl-mesa0 libosmesa6-dev libgl1-mesa-dri  # headless GL on llvmpipe
   libgtest-dev
   pybind11-dev python3-dev python3-numpy python3-pytest python3-openimageio  # Python module
+  clang-14 libclang-rt-14-dev  # scripts/sanitize.sh and scripts/fuzz.sh: ASan, UBSan, libFuzzer
 )
 
 sudo_cmd=()
