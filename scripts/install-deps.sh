@@ -14,6 +14,7 @@ packages=(
   pybind11-dev python3-dev python3-numpy python3-pytest python3-openimageio  # Python module
   blender fonts-dejavu-core  # real renders for the yardstick and its tests; contact sheet labels
   slurmctld slurmd slurm-client munge  # taa-farm's test runs a one-node Slurm cluster (tests/farm)
+  clang-14 libclang-rt-14-dev  # scripts/sanitize.sh and scripts/fuzz.sh: ASan, UBSan, libFuzzer
 )
 
 sudo_cmd=()

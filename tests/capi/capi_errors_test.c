@@ -31,6 +31,15 @@ static void test_null_handles(void) {
   CHECK(taa_node_push_frame(NULL, NULL) == TAA_ERROR_INVALID_ARGUMENT, "push on NULL node");
   CHECK(taa_node_reset_history(NULL) == TAA_ERROR_INVALID_ARGUMENT, "reset on NULL node");
   taa_node_destroy(NULL); /* must be a no-op */
+
+  /* An enum field holding no enumerator (UBSan: reading it as the C++ enum was undefined). */
+  taa_create_options options;
+  taa_create_options_init(&options);
+  options.gl_backend = (taa_gl_backend)9;
+  taa_node* node = NULL;
+  CHECK(taa_node_create(&options, &node) == TAA_ERROR_INVALID_ARGUMENT, "back end 9");
+  CHECK(node == NULL && contains(taa_last_error(), "unknown GL back end 9"), "message: %s",
+        taa_last_error());
 }
 
 static void test_parameters(taa_node* node) {

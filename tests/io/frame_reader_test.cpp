@@ -429,6 +429,23 @@ TEST(ReadFrameErrors, NonFiniteHeaderMatrixIsAnError) {
   EXPECT_EQ(error.context().frame, 9);
 }
 
+// A data window no GPU texture holds is refused when read, naming the file, rather than by GL
+// after everything was read and converted (or by the allocator, for a damaged header).
+TEST(ReadFrameErrors, ADataWindowBeyondTheTextureLimitIsRefused) {
+  const std::string folder = scratchFolder();
+  const std::string path = folder + "/wide.exr";
+  writeTestExr(path, {"R", "G", "B", "A"}, [](int, int) { return 0.5f; }, kMaxImageSide + 1, 2);
+  AovLayout layout;
+  layout.color = {path, {"R", "G", "B", "A"}};
+  const Error error = errorOf([&] { readFrame(layout, 1); });
+  EXPECT_EQ(error.context().file, path);
+  EXPECT_TRUE(contains(error.what(), "data window 16385x2 at (0, 0) is not 1 to 16384 pixels a "
+                                     "side"))
+      << error.what();
+  writeTestExr(path, {"R", "G", "B", "A"}, [](int, int) { return 0.5f; }, kMaxImageSide, 2);
+  EXPECT_EQ(readFrame(layout, 1).color.width(), kMaxImageSide);
+}
+
 TEST(ReadFrameErrors, TextFileNamedExrIsRejected) {
   const std::string folder = scratchFolder();
   taa::test::writeTextFile(folder + "/c.exr", "this is not an image\n");

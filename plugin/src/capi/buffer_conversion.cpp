@@ -9,6 +9,7 @@
 #include <string>
 #include <type_traits>
 
+#include "capi/host_enum.h"
 #include "capi/status_error.h"
 #include "io/aov_conversion.h"
 
@@ -96,15 +97,16 @@ Layout describe(const taa_buffer& buffer, const char* what, int minChannels, int
     invalid(name + " buffer must have " + expected + " channels, has " +
             std::to_string(buffer.channels));
   }
-  if (buffer.type != TAA_PIXEL_HALF && buffer.type != TAA_PIXEL_FLOAT) {
-    invalid(name + " buffer has an unknown pixel type " + std::to_string(int(buffer.type)));
+  const int type = hostEnumValue(buffer.type);
+  if (type != TAA_PIXEL_HALF && type != TAA_PIXEL_FLOAT) {
+    invalid(name + " buffer has an unknown pixel type " + std::to_string(type));
   }
   Layout layout;
   layout.data = static_cast<char*>(buffer.data);
   layout.width = buffer.width;
   layout.height = buffer.height;
   layout.channels = buffer.channels;
-  layout.half = buffer.type == TAA_PIXEL_HALF;
+  layout.half = type == TAA_PIXEL_HALF;
   layout.yUp = buffer.y_up != 0;
   const std::ptrdiff_t packedPixel = std::ptrdiff_t(buffer.channels) * (layout.half ? 2 : 4);
   layout.pixelStride = buffer.pixel_stride_bytes == 0 ? packedPixel : buffer.pixel_stride_bytes;

@@ -5,6 +5,7 @@
 #include <new>
 #include <string>
 
+#include "capi/host_enum.h"
 #include "capi/node.h"
 #include "capi/status_error.h"
 #include "taa/error.h"
@@ -58,14 +59,14 @@ taa_status guarded(taa_node* handle, const char* function, Body&& body) {
   return TAA_ERROR_INTERNAL;
 }
 
-taa::gl::Backend toBackend(taa_gl_backend backend) {
-  switch (backend) {
+taa::gl::Backend toBackend(const taa_gl_backend& backend) {
+  switch (taa::capi::hostEnumValue(backend)) {
     case TAA_GL_AUTO: return taa::gl::Backend::Auto;
     case TAA_GL_EGL: return taa::gl::Backend::Egl;
     case TAA_GL_OSMESA: return taa::gl::Backend::OsMesa;
   }
   throw StatusError(TAA_ERROR_INVALID_ARGUMENT,
-                    "unknown GL back end " + std::to_string(int(backend)));
+                    "unknown GL back end " + std::to_string(taa::capi::hostEnumValue(backend)));
 }
 
 std::string nameOrThrow(const char* name) {

@@ -46,34 +46,53 @@ std::string partName(const OIIO::ImageSpec& spec) {
   return name;
 }
 
-// Opens `path` and insists that OIIO read it as OpenEXR: a PNG named .exr must not slip through.
+// The first four bytes of every OpenEXR file.
+constexpr unsigned char kExrMagic[4] = {0x76, 0x2f, 0x31, 0x01};
+
+// Opens `path` with OIIO's OpenEXR reader only. A file that is not EXR (a PNG named .exr) is
+// refused naming the format it reads as; a damaged EXR never reaches the readers of other
+// formats (OIIO tries every plugin it has on a file its named reader refuses: DICOM, FITS...,
+// each loaded at a cost in time and memory, their bugs not ours to meet).
 OpenExr openExr(const std::string& path, const std::string& aovName, int frame) {
   const ErrorContext context{path, frame, ""};
   std::error_code ignored;
   if (!std::filesystem::exists(path, ignored)) {
     throw Error("cannot find the " + aovName + " file", context);
   }
-  // OIIO reports a file it cannot open as "not an OpenEXR file"; say why it cannot be read.
+  unsigned char magic[4] = {};
   if (std::FILE* file = std::fopen(path.c_str(), "rb")) {
+    const std::size_t got = std::fread(magic, 1, sizeof magic, file);
     std::fclose(file);
-  } else {
+    if (got != sizeof magic || std::memcmp(magic, kExrMagic, sizeof magic) != 0) {
+      std::string readsAs;  // only to name it: OIIO tries every format it knows
+      if (auto other = OIIO::ImageInput::open(path)) {
+        readsAs = std::string(" (it reads as ") + other->format_name() + ")";
+      }
+      OIIO::geterror();  // clear what the failed attempts left
+      throw Error("the " + aovName + " file is not an OpenEXR file" + readsAs, context);
+    }
+  } else {  // OIIO would report "not an OpenEXR file": say why it cannot be read
     throw Error("cannot read the " + aovName + " file: " + std::strerror(errno), context);
   }
-  auto input = OIIO::ImageInput::open(path);
-  if (!input) {
-    // OIIO keeps the reason in its global error state when open() fails.
-    throw Error("cannot read the " + aovName + " file as OpenEXR: " + OIIO::geterror(), context);
-  }
-  const std::string format = input->format_name();
-  if (format != "openexr") {
-    throw Error("the " + aovName + " file is not an OpenEXR file (it reads as " + format + ")",
-                context);
+  auto input = OIIO::ImageInput::create("openexr");
+  OIIO::ImageSpec first;
+  if (!input || !input->open(path, first)) {
+    std::string reason = input ? input->geterror() : OIIO::geterror();
+    if (reason.empty()) reason = "unknown error";
+    throw Error("cannot read the " + aovName + " file as OpenEXR: " + reason, context);
   }
   std::vector<OIIO::ImageSpec> parts;
   for (int subimage = 0; input->seek_subimage(subimage, 0); ++subimage) {
     parts.push_back(input->spec());
     if (parts.back().deep) throw Error("deep EXR files are not supported", context);
     if (parts.back().depth != 1) throw Error("volume (3D) EXR files are not supported", context);
+    const OIIO::ImageSpec& part = parts.back();
+    if (part.width <= 0 || part.height <= 0 || part.width > kMaxImageSide ||
+        part.height > kMaxImageSide) {
+      throw Error("the " + aovName + " file's data window " + describeWindow(part) +
+                      " is not 1 to " + std::to_string(kMaxImageSide) + " pixels a side",
+                  context);
+    }
   }
   if (parts.empty()) throw Error("the " + aovName + " file has no image part", context);
   return {path, std::move(input), std::move(parts)};

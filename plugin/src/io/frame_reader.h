@@ -36,6 +36,11 @@ struct FrameData {
   ExtraChannels passthrough;      // the layout's pass-through channels, types kept
 };
 
+// The largest data window side readFrame accepts: GPUs' texture limit (16384 on llvmpipe and
+// most hardware), and a damaged header claiming 100000 x 100000 must not make taa allocate and
+// clear tens of gigabytes before the read finds the file too short.
+inline constexpr int kMaxImageSide = 16384;
+
 // Where camera matrices come from besides the color header.
 struct CameraInputs {
   NdcConvention headerNdc = NdcConvention::ZeroOneYDown;  // of the headers' worldToNDC
@@ -54,7 +59,8 @@ struct CameraInputs {
 // Throws taa::Error naming file, frame and channel for: a missing or unreadable file, a non-EXR
 // (e.g. a PNG, whatever its name), truncated or corrupt file, a missing part (listing those
 // available), a missing channel (listing those available), a wrong channel count for an AOV,
-// depth/motion windows that differ from color's (stating both), radial depth without a camera.
+// depth/motion windows that differ from color's (stating both), radial depth without a camera,
+// a data window beyond kMaxImageSide.
 FrameData readFrame(const AovLayout& layout, int frame, const CameraInputs& cameras = {});
 
 

@@ -1,0 +1,37 @@
+// libFuzzer target: the camera sidecar JSON (io/camera_sidecar.h) as taatool reads it, from a
+// file, then every entry's camera and jitter looked up. Malformed files are a taa::Error naming
+// the file; nothing else may happen, and a jitter that loads is finite.
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <fstream>
+#include <string>
+
+#include <unistd.h>
+
+#include "io/camera_sidecar.h"
+#include "taa/error.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  static const std::string path =
+      "/tmp/taa_fuzz_sidecar_" + std::to_string(::getpid()) + ".json";
+  std::ofstream(path, std::ios::binary).write(reinterpret_cast<const char*>(data),
+                                              std::streamsize(size));
+  try {
+    const taa::io::CameraSidecar sidecar = taa::io::CameraSidecar::load(path);
+    for (int frame : {0, 1, 1001, -1}) {
+      try {
+        const glm::vec2 jitter = sidecar.jitter(frame);
+        if (!std::isfinite(jitter.x) || !std::isfinite(jitter.y)) __builtin_trap();
+      } catch (const taa::Error&) {
+      }
+      try {
+        sidecar.camera(frame);
+      } catch (const taa::Error&) {
+      }
+    }
+  } catch (const taa::Error& e) {
+    if (e.context().file != path) __builtin_trap();
+  }
+  return 0;
+}
