@@ -6,16 +6,21 @@
 #      and oiiotool doing only the I/O of the same job in one process: read the three AOVs,
 #      write RGBA. Both get the same --compression name; a bare "zip" is level 1 in taatool
 #      (io/exr_writer.h) and OpenEXR's level 4 in oiiotool;
-#   3. peak RSS of taatool at 4K for 24 and 96 frames (the 96 reuse 8 rendered frames by links).
-# Uses Debian's /usr/bin/time and oiiotool (openimageio-tools). Environment: SIZE, FRAMES,
-# COMPRESSIONS (default "zip piz none"), PARTS ("speed memory" by default; either alone).
+#   3. peak RSS of taatool at 4K for 24 and 96 frames (the 96 reuse 8 rendered frames by links);
+#   4. "blender": a real render, the yardstick's fence scene rendered by Blender Cycles at
+#      1920x1080, 24 frames, one multilayer ZIP file a frame as Cycles writes it (half colour,
+#      float depth, float 4-channel vectors), cached in $TAA_BENCH_CACHE (default
+#      ~/.cache/taa/bench; about 6 minutes to render once): taatool's history and window modes
+#      at their defaults against oiiotool reading the same files and writing RGBA.
+# Uses Debian's /usr/bin/time, oiiotool (openimageio-tools) and blender. Environment: SIZE,
+# FRAMES, COMPRESSIONS (default "zip piz none"), PARTS ("speed memory blender" by default; any).
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${TAA_BUILD_DIR:-$root/build}"
 size="${SIZE:-1920x1080}"
 frames="${FRAMES:-24}"
 compressions="${COMPRESSIONS:-zip piz none}"
-parts="${PARTS:-speed memory}"
+parts="${PARTS:-speed memory blender}"
 work="$build/benchmark"
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
 cmake --build "$build" -j"$(nproc)" --target taatool taa-scenegen >/dev/null
@@ -84,6 +89,32 @@ if [[ " $parts " == *" memory "* ]]; then
     read -r s kib cpu < <(measure "$taatool" -q "$linked/beauty.####.exr" --depth "$linked/depth.####.exr" \
       --motion "$linked/motion.####.exr" --frames "1-$count" -o "$work/out/r.####.exr")
     echo "4K, $count frames: $s s ($cpu s CPU), peak RSS $((kib / 1024)) MiB"
+  done
+fi
+
+if [[ " $parts " == *" blender "* ]]; then
+  render="${TAA_BENCH_CACHE:-$HOME/.cache/taa/bench}/cycles_fence-1920x1080-1-24"
+  if [ ! -f "$render/input.0024.exr" ] || [ ! -f "$render/camera.json" ]; then
+    blender -b --factory-startup -P "$root/samples/blender/render_scene.py" -- \
+      --scene cycles_fence --out "$render" --size 1920x1080 --frames 1-24 \
+      --products camera,input --input-depth float >/dev/null
+  fi
+  echo "Blender Cycles render (cycles_fence), 1920x1080, 24 frames, multilayer ZIP"
+  printf "%-22s %8s %6s %9s %10s %16s\n" run "wall s" fps "CPU s" "peak MiB" "/ oiiotool wall"
+  rm -rf "$work/io" && mkdir -p "$work/io"
+  read -r io_s io_kib io_cpu < <(measure oiiotool --frames 1-24 "$render/input.#.exr" \
+    --ch R=ViewLayer.Combined.R,G=ViewLayer.Combined.G,B=ViewLayer.Combined.B,A=ViewLayer.Combined.A \
+    -d half --compression zip -o "$work/io/o.#.exr")
+  printf "%-22s %8.2f %6.2f %9.2f %10d %16s\n" "oiiotool I/O only" "$io_s" \
+    "$(awk -v s="$io_s" 'BEGIN { print 24 / s }')" "$io_cpu" "$((io_kib / 1024))" "1.00"
+  for mode in history window; do
+    rm -rf "$work/out"
+    read -r s kib cpu < <(measure "$taatool" -q "$render/input.####.exr" --preset cycles \
+      --camera-sidecar "$render/camera.json" --frames 1-24 --mode "$mode" --compression zip \
+      -o "$work/out/r.####.exr")
+    printf "%-22s %8.2f %6.2f %9.2f %10d %16.2f\n" "taatool --mode $mode" "$s" \
+      "$(awk -v s="$s" 'BEGIN { print 24 / s }')" "$cpu" "$((kib / 1024))" \
+      "$(awk -v s="$s" -v o="$io_s" 'BEGIN { print s / o }')"
   done
 fi
 rm -rf "$work/out" "$work/io"

@@ -58,7 +58,7 @@ enum class ResolveMode {
 struct WindowOptions {
   // K: frames used on each side of the resolved frame (2K+1 in all), 0..16. The window stops
   // at the shot's ends (gaps, reset frames). Memory grows with it: 2K+1 frames are kept.
-  int radius = 8;
+  int radius = 4;
   // Pixels: standard deviation of the Gaussian weighting a carried sample by its distance to
   // the output pixel's centre. Smaller is sharper and noisier. Typical 0.3 .. 0.6.
   float sigma = 0.35f;
@@ -72,7 +72,7 @@ struct WindowOptions {
   // the frames nearer in time; YCoCg, working space, plus a small floor) loses its weight, so
   // shading that changes over the window (moving lights, shadows) does not smear. Larger
   // keeps more samples. 0 turns the test off.
-  float colourTolerance = 2.0f;
+  float colourTolerance = 3.0f;
   // Pixels: a sample counts as static (carried by exact camera reprojection) when its motion
   // vector agrees with the camera's motion within this; otherwise its vectors are chained.
   float staticTolerance = 0.25f;
