@@ -116,5 +116,22 @@ if [[ " $parts " == *" blender "* ]]; then
       "$(awk -v s="$s" 'BEGIN { print 24 / s }')" "$cpu" "$((kib / 1024))" \
       "$(awk -v s="$s" -v o="$io_s" 'BEGIN { print s / o }')"
   done
+  # Peak memory against sequence length: the 24 frames linked to make 24 and 96 (no sidecar:
+  # it covers frames 1-24; the motion is wrong where they repeat, which memory does not mind).
+  for count in 24 96; do
+    linked="$work/blender-$count"
+    rm -rf "$linked" && mkdir -p "$linked"
+    for f in $(seq 1 "$count"); do
+      ln -s "$render/input.$(printf %04d $(( (f - 1) % 24 + 1 ))).exr" \
+        "$linked/input.$(printf %04d "$f").exr"
+    done
+    for mode in history window; do
+      rm -rf "$work/out"
+      read -r s kib cpu < <(measure "$taatool" -q "$linked/input.####.exr" --preset cycles \
+        --frames "1-$count" --mode "$mode" --compression zip -o "$work/out/r.####.exr")
+      echo "taatool --mode $mode, $count frames (vectors only): $s s, peak RSS $((kib / 1024)) MiB"
+    done
+    rm -rf "$linked"
+  done
 fi
 rm -rf "$work/out" "$work/io"

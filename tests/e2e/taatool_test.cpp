@@ -1,6 +1,7 @@
 // End-to-end: run the taatool binary on generated sequences, check outputs, errors and exit codes.
 #include <gtest/gtest.h>
 
+#include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imageio.h>
 
 #include <cmath>
@@ -239,6 +240,59 @@ TEST_F(TaatoolTest, PipelinedAndSerialRunsAreBitIdentical) {
     }
   }
   expectError(run({"--threads", "-1"}), {"--threads"});
+}
+
+// The window mode's promise to a farm: any split of the shot writes the whole run's pixels.
+TEST_F(TaatoolTest, WindowSubRangesWriteTheWholeRunsPixels) {
+  const fs::path in = generate("in", scenes::OutputLayout::Separate, 1, 10);
+  auto whole = separateArgs(in, dir_ / "whole" / "r.####.exr");
+  whole.insert(whole.end(), {"--mode", "window", "--window", "2", "--frames", "1-10"});
+  ASSERT_EQ(run(whole).exitCode, 0);
+  for (const std::string range : {"1-3", "4-7", "8-10", "5"}) {
+    auto part = separateArgs(in, dir_ / "parts" / "r.####.exr");
+    part.insert(part.end(), {"--mode", "window", "--window", "2", "--frames", range});
+    const ToolRun r = run(part);
+    ASSERT_EQ(r.exitCode, 0) << range << ": " << r.err;
+  }
+  for (int f = 1; f <= 10; ++f) {
+    char name[32];
+    std::snprintf(name, sizeof name, "r.%04d.exr", f);
+    const auto expected = readPixels(dir_ / "whole" / name);
+    ASSERT_FALSE(expected.empty());
+    EXPECT_EQ(readPixels(dir_ / "parts" / name), expected) << name;
+  }
+}
+
+// Without camera matrices the window carries every sample along its vectors, and -v says so.
+TEST_F(TaatoolTest, WindowWithoutCamerasFollowsVectorsAndSaysSo) {
+  // A 3D scene: its headers carry the camera matrices.
+  const fs::path in = generate("in", scenes::OutputLayout::Separate, 1, 5, "rotate_yaw");
+  auto args = separateArgs(in, dir_ / "with" / "r.####.exr");
+  args.insert(args.end(), {"--mode", "window", "--window", "2", "-v"});
+  const ToolRun withCameras = run(args);
+  ASSERT_EQ(withCameras.exitCode, 0) << withCameras.err;
+  EXPECT_EQ(withCameras.err.find("no camera matrices"), std::string::npos) << withCameras.err;
+
+  for (int f = 1; f <= 5; ++f) {  // the same frames, their headers without the matrices
+    char name[32];
+    std::snprintf(name, sizeof name, "beauty.%04d.exr", f);
+    OIIO::ImageBuf frame((in / name).string());
+    ASSERT_TRUE(frame.read(0, 0, true)) << frame.geterror();
+    frame.specmod().erase_attribute("worldToCamera");
+    frame.specmod().erase_attribute("worldToNDC");
+    ASSERT_TRUE(frame.write((in / name).string())) << frame.geterror();
+  }
+  args = separateArgs(in, dir_ / "without" / "r.####.exr");
+  args.insert(args.end(), {"--mode", "window", "--window", "2", "-v"});
+  const ToolRun without = run(args);
+  ASSERT_EQ(without.exitCode, 0) << without.err;
+  EXPECT_NE(without.err.find("frame 1 has no camera matrices (header or sidecar): its samples "
+                             "follow their motion vectors only"),
+            std::string::npos)
+      << without.err;
+  const auto output = readPixels(dir_ / "without" / "r.0003.exr");
+  ASSERT_FALSE(output.empty());
+  for (float v : output) ASSERT_TRUE(std::isfinite(v));
 }
 
 TEST_F(TaatoolTest, HelpAndBadArguments) {

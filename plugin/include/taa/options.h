@@ -137,7 +137,7 @@ struct ResolveOptions {
   //   Clamp         clamp each component to the min/max box (the textbook version)
   //   Clip          move it toward the filtered colour until it enters the min/max box
   //   VarianceClip  clip to mean +- varianceGamma sigma, intersected with the min/max box
-  Rectify rectify = Rectify::Clip;
+  Rectify rectify = Rectify::VarianceClip;
   // [program] Colour space of the neighbourhood box: YCoCg hugs natural colours tighter.
   BoxSpace boxSpace = BoxSpace::YCoCg;
   // [program] Neighbours forming the box: plus-shaped 5 or 3x3 9.
