@@ -93,6 +93,13 @@ TEST_F(InputPolicyTest, DescendingFramesAreAnError) {
   EXPECT_FALSE(fs::exists(dir_ / "out"));
 }
 
+// Cut detection is a history-mode stage: asked for in window mode it is an error, not ignored.
+TEST_F(InputPolicyTest, CutDetectionInWindowModeIsAnError) {
+  test::expectToolError(run({"--mode", "window", "--cut-detection", "0.5"}),
+                        {"--cut-detection is a history-mode stage", "--reset-frames"});
+  EXPECT_FALSE(fs::exists(dir_ / "out"));
+}
+
 TEST_F(InputPolicyTest, NonFiniteColourAndMotionAreReportedWithCountsOrRefusedWhenStrict) {
   rewriteExr(in_ / "beauty.0003.exr", [](OIIO::ImageSpec&, std::vector<float>& p) {
     p[0] = p[5] = p[10] = kNaN;

@@ -307,8 +307,9 @@ std::vector<Entry> makeEntries() {
                                   "pixels converge at once"},
                                  &ResolveOptions::sampleCount));
   entries.push_back(numberOption({"cut-detection", "Cuts", "", "",
-                                  "fraction of rejected pixels that marks a cut and resets "
-                                  "history (0: off; needs depth)"},
+                                  "history mode: fraction of rejected pixels that marks a cut "
+                                  "and resets history (0: off; needs depth). Window mode "
+                                  "takes cuts from --reset-frames"},
                                  0.0f, 1.0f, &ResolveOptions::cutDetection));
   entries.push_back(numberOption({"sharpen", "Output", "", "",
                                   "unsharp mask on the output only, limited to the neighbours' "

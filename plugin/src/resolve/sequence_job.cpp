@@ -154,6 +154,11 @@ void validateSequenceJob(const SequenceJob& job) {
                   {job.layout.color.pattern, job.frames[i], ""});
     }
   }
+  if (job.resolve.mode == ResolveMode::Window && job.resolve.cutDetection > 0.0f) {
+    // Detection judges a frame by how much of the history it rejects; a window has no history.
+    throw Error("--cut-detection is a history-mode stage: in window mode give the shot's cuts "
+                "with --reset-frames (a window never crosses them)");
+  }
   for (int frame : job.prerollFrames) {
     if (job.resolve.mode == ResolveMode::Window) {
       throw Error("pre-roll frames are for the history resolve: a window frame needs none",
