@@ -54,6 +54,8 @@ TEST_F(OfxHostWindowTest, ParametersHaveTheLibrarysDefaults) {
                    double(defaults.sigma));
   EXPECT_DOUBLE_EQ(params.at("windowFalloff").props.getDouble(kOfxParamPropDefault),
                    double(defaults.falloff));
+  ASSERT_TRUE(params.count("windowTaper"));
+  EXPECT_EQ(params.at("windowTaper").props.getInt(kOfxParamPropDefault), defaults.taper ? 1 : 0);
   EXPECT_DOUBLE_EQ(params.at("windowColourTolerance").props.getDouble(kOfxParamPropDefault),
                    double(defaults.colourTolerance));
   EXPECT_DOUBLE_EQ(params.at("windowStaticTolerance").props.getDouble(kOfxParamPropDefault),

@@ -20,6 +20,7 @@ const char* const kModeNames[] = {"history", "window"};
 constexpr const char* kWindowRadius = "window";
 constexpr const char* kWindowSigma = "windowSigma";
 constexpr const char* kWindowFalloff = "windowFalloff";
+constexpr const char* kWindowTaper = "windowTaper";
 constexpr const char* kWindowColourTolerance = "windowColourTolerance";
 constexpr const char* kWindowStaticTolerance = "windowStaticTolerance";
 constexpr const char* kWindowReconstructionWeight = "windowReconstructionWeight";
@@ -150,7 +151,7 @@ void require(taa_node* node, taa_status status) {
 
 bool PluginSettings::operator==(const PluginSettings& o) const {
   auto tie = [](const PluginSettings& s) {
-    return std::tie(s.mode, s.windowRadius, s.windowSigma, s.windowFalloff,
+    return std::tie(s.mode, s.windowRadius, s.windowSigma, s.windowFalloff, s.windowTaper,
                     s.windowColourTolerance, s.windowStaticTolerance,
                     s.windowReconstructionWeight, s.blend, s.rectify, s.dilateMotion, s.jitter,
                     s.jitterOffset, s.jitterPeriod, s.motionY, s.motionTo, s.motionScale,
@@ -179,6 +180,10 @@ void defineParameters(OfxParamSetHandle set) {
                "Window mode: frames, weight 1/(1+(distance/falloff)^2) by distance in time; 0 "
                "weighs every frame alike (taatool --window-falloff).",
                double(window.falloff), 0.0, 1000.0);
+  defineBoolean(set, kWindowTaper, "Window Taper",
+                "Window mode: also weigh frames by a Hann taper over the window, so that frames "
+                "enter and leave it gently (taatool --window-taper).",
+                window.taper);
   defineDouble(set, kWindowColourTolerance, "Window Colour Tolerance",
                "Window mode: how far outside the frame's own colour box a sample may be; 0 turns "
                "the test off (taatool --window-colour-tolerance).",
@@ -288,6 +293,7 @@ PluginSettings readSettings(OfxImageEffectHandle effect, OfxTime time) {
   s.windowRadius = getInt(set, kWindowRadius, time);
   s.windowSigma = getDouble(set, kWindowSigma, time);
   s.windowFalloff = getDouble(set, kWindowFalloff, time);
+  s.windowTaper = getInt(set, kWindowTaper, time) != 0;
   s.windowColourTolerance = getDouble(set, kWindowColourTolerance, time);
   s.windowStaticTolerance = getDouble(set, kWindowStaticTolerance, time);
   s.windowReconstructionWeight = getDouble(set, kWindowReconstructionWeight, time);
@@ -318,6 +324,7 @@ void applySettings(taa_node* node, const PluginSettings& s, RenderScale scale) {
   require(node, taa_node_set_int(node, "window", s.windowRadius));
   require(node, taa_node_set_float(node, "window-sigma", float(s.windowSigma)));
   require(node, taa_node_set_float(node, "window-falloff", float(s.windowFalloff)));
+  require(node, taa_node_set_string(node, "window-taper", s.windowTaper ? "on" : "off"));
   require(node, taa_node_set_float(node, "window-colour-tolerance",
                                    float(s.windowColourTolerance)));
   require(node, taa_node_set_float(node, "window-static-tolerance",

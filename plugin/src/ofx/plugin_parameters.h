@@ -22,6 +22,7 @@ struct PluginSettings {
   int windowRadius = taa::WindowOptions{}.radius;
   double windowSigma = taa::WindowOptions{}.sigma;
   double windowFalloff = taa::WindowOptions{}.falloff;
+  bool windowTaper = taa::WindowOptions{}.taper;
   double windowColourTolerance = taa::WindowOptions{}.colourTolerance;
   double windowStaticTolerance = taa::WindowOptions{}.staticTolerance;
   double windowReconstructionWeight = taa::WindowOptions{}.reconstructionWeight;
