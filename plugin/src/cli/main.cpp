@@ -11,6 +11,7 @@
 #include "cli/input_report.h"
 #include "fast_zlib/fast_zlib.h"
 #include "taa/error.h"
+#include "util/frame_memory.h"
 #include "util/interruption.h"
 
 namespace {
@@ -86,6 +87,7 @@ int run(const std::vector<std::string>& args) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  taa::keepFrameBuffersOutOfTheHeap();
   try {
     return run(std::vector<std::string>(argv + 1, argv + argc));
   } catch (const taa::Stopped& e) {

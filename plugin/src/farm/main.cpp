@@ -10,6 +10,7 @@
 #include "farm/farm_arguments.h"
 #include "farm/farm_errors.h"
 #include "farm/verbs.h"
+#include "util/frame_memory.h"
 #include "util/interruption.h"
 
 namespace {
@@ -31,6 +32,7 @@ int run(const std::vector<std::string>& argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  taa::keepFrameBuffersOutOfTheHeap();
   try {
     return run(std::vector<std::string>(argv + 1, argv + argc));
   } catch (const taa::farm::UsageError& e) {
