@@ -2,8 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -177,6 +179,21 @@ std::string fileBytes(const std::string& path) {
   return std::string(std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>());
 }
 
+// The file's bytes with the value of its capDate attribute (the time of writing, which OIIO
+// stamps) blanked: two writes a second apart are otherwise different files.
+std::string fileBytesButDate(const std::string& path) {
+  std::string bytes = fileBytes(path);
+  const std::string name("capDate\0string\0", 15);
+  const auto at = bytes.find(name);
+  if (at != std::string::npos && at + name.size() + 4 <= bytes.size()) {
+    std::uint32_t size = 0;
+    std::memcpy(&size, bytes.data() + at + name.size(), 4);
+    const std::size_t value = at + name.size() + 4;
+    if (value + size <= bytes.size()) std::fill_n(bytes.begin() + long(value), size, '0');
+  }
+  return bytes;
+}
+
 // Half samples into a half file go to the encoder untouched; with extra channels they are
 // widened to float first, which is exact, so the file holds the same halves.
 TEST(WriteExrAtomic, HalfImageIsWrittenBitForBit) {
@@ -214,16 +231,14 @@ TEST(WriteExrAtomic, HalfImageIsWrittenBitForBit) {
 TEST(WriteExrAtomic, BareZipMeansTheDefaultLevel) {
   const std::string folder = scratchFolder();
   const Image rgba = makeRgba(64, 48, [](int p, int c) { return std::sin(0.37f * p + c); });
-  // A fixed DateTime: OIIO stamps the clock otherwise, and two writes may straddle a second.
-  OIIO::ImageSpec dated;
-  dated.attribute("DateTime", "2026:01:01 00:00:00");
+  const OIIO::ImageSpec none;
   for (const std::string compression : {"zip", "zip:1", "zip:9", "zips", "zips:1"}) {
-    writeExrAtomic(folder + "/" + compression + ".exr", rgba, dated, {PixelType::Half, compression});
+    writeExrAtomic(folder + "/" + compression + ".exr", rgba, none, {PixelType::Half, compression});
   }
   ASSERT_EQ(kDefaultZipLevel, 1);
-  EXPECT_EQ(fileBytes(folder + "/zip.exr"), fileBytes(folder + "/zip:1.exr"));
-  EXPECT_EQ(fileBytes(folder + "/zips.exr"), fileBytes(folder + "/zips:1.exr"));
-  EXPECT_NE(fileBytes(folder + "/zip.exr"), fileBytes(folder + "/zip:9.exr"));
+  EXPECT_EQ(fileBytesButDate(folder + "/zip.exr"), fileBytesButDate(folder + "/zip:1.exr"));
+  EXPECT_EQ(fileBytesButDate(folder + "/zips.exr"), fileBytesButDate(folder + "/zips:1.exr"));
+  EXPECT_NE(fileBytesButDate(folder + "/zip.exr"), fileBytesButDate(folder + "/zip:9.exr"));
 }
 
 TEST(WriteExrAtomic, WithoutTemplatePixelsTheWindowIsTheImage) {
