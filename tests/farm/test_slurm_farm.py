@@ -212,6 +212,15 @@ def find_task_process(job, task):
     return None
 
 
+TEMPORARY_WRITER = re.compile(r"\.taa-tmp-.*-(\d+)-\d+\.exr$")
+
+
+def writer_alive(name):
+    """Whether the process named in a temporary's name (its writer, on this host) still runs."""
+    match = TEMPORARY_WRITER.search(name)
+    return bool(match) and alive(int(match.group(1)))
+
+
 def temporaries(folder):
     """Hidden files in `folder`: taa's temporaries (".<frame>.taa-tmp-<host>-<pid>-<n>.exr")."""
     try:
@@ -258,7 +267,11 @@ def test_a_task_killed_mid_frame_and_requeued_completes_its_chunk(cluster, histo
             break
     assert killed, "task 1 finished before it could be killed, three times"
     job, out, logs, killed_log = killed
-    left = temporaries(out)
+    # The killed task's temporaries: those whose writer is gone (checked after listing, and
+    # still there after the check). Another task still running has its own in flight, which
+    # it renames into place itself.
+    left = [name for name in temporaries(out)
+            if not writer_alive(name) and os.path.exists(os.path.join(out, name))]
     print(f"task 1 killed after writing {WRITTEN.findall(killed_log)}, leaving {left}")
     wait_for(lambda: task_states(cluster, job).get(1, ("",))[0] == "FAILED", 30,
              "task 1 to be FAILED")
