@@ -29,7 +29,7 @@ int test_report(const char* name) {
   return 1;
 }
 
-static int read_floats(FILE* in, float** out, size_t n) {
+int fixture_read_floats(FILE* in, float** out, size_t n) {
   *out = malloc(n * sizeof(float));
   return *out && fread(*out, sizeof(float), n, in) == n;
 }
@@ -56,9 +56,11 @@ int fixture_load(const char* path, fixture* out) {
   for (int i = 0; ok && i < out->count; ++i) {
     fixture_frame* f = &out->frames[i];
     int32_t number;
-    ok = fread(&number, sizeof number, 1, in) == 1 && read_floats(in, &f->color, pixels * 4) &&
-         read_floats(in, &f->depth, pixels) && read_floats(in, &f->motion, pixels * 2) &&
-         read_floats(in, &f->reference, pixels * 4);
+    ok = fread(&number, sizeof number, 1, in) == 1 &&
+         fixture_read_floats(in, &f->color, pixels * 4) &&
+         fixture_read_floats(in, &f->depth, pixels) &&
+         fixture_read_floats(in, &f->motion, pixels * 2) &&
+         fixture_read_floats(in, &f->reference, pixels * 4);
     f->frame = number;
   }
   fclose(in);

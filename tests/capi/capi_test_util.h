@@ -4,6 +4,7 @@
 #define TAA_CAPI_TEST_UTIL_H
 
 #include <stddef.h>
+#include <stdio.h>
 #include <stdint.h>
 
 #include "taa/taa.h"
@@ -32,6 +33,8 @@ typedef struct fixture {
 
 /* Reads the fixture file; returns 0 and prints why on failure. */
 int fixture_load(const char* path, fixture* out);
+/* Reads n floats into a new buffer (*out, freed by the caller); 0 on a short read. */
+int fixture_read_floats(FILE* in, float** out, size_t n);
 void fixture_free(fixture* f);
 
 /* A tightly packed, top-first float buffer over `data`. */

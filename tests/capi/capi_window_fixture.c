@@ -1,14 +1,10 @@
 #include "capi_window_fixture.h"
+#include "capi_test_util.h"
 
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-
-static int read_floats(FILE* in, float** out, size_t n) {
-  *out = malloc(n * sizeof(float));
-  return *out && fread(*out, sizeof(float), n, in) == n;
-}
 
 int window_fixture_load(const char* path, window_fixture* out) {
   memset(out, 0, sizeof *out);
@@ -35,10 +31,10 @@ int window_fixture_load(const char* path, window_fixture* out) {
     ok = fread(&number, sizeof number, 1, in) == 1 &&
          fread(f->world_to_camera, sizeof(float), 16, in) == 16 &&
          fread(f->world_to_ndc, sizeof(float), 16, in) == 16 &&
-         read_floats(in, &f->color, pixels * 4) && read_floats(in, &f->depth, pixels) &&
-         read_floats(in, &f->motion, pixels * 2);
+         fixture_read_floats(in, &f->color, pixels * 4) && fixture_read_floats(in, &f->depth, pixels) &&
+         fixture_read_floats(in, &f->motion, pixels * 2);
     for (int r = 0; ok && r < REFERENCE_COUNT; ++r) {
-      ok = read_floats(in, &f->reference[r], pixels * 4);
+      ok = fixture_read_floats(in, &f->reference[r], pixels * 4);
     }
     f->frame = number;
   }
