@@ -31,7 +31,8 @@ int window_fixture_load(const char* path, window_fixture* out) {
     ok = fread(&number, sizeof number, 1, in) == 1 &&
          fread(f->world_to_camera, sizeof(float), 16, in) == 16 &&
          fread(f->world_to_ndc, sizeof(float), 16, in) == 16 &&
-         fixture_read_floats(in, &f->color, pixels * 4) && fixture_read_floats(in, &f->depth, pixels) &&
+         fixture_read_floats(in, &f->color, pixels * 4) &&
+         fixture_read_floats(in, &f->depth, pixels) &&
          fixture_read_floats(in, &f->motion, pixels * 2);
     for (int r = 0; ok && r < REFERENCE_COUNT; ++r) {
       ok = fixture_read_floats(in, &f->reference[r], pixels * 4);
