@@ -25,10 +25,11 @@ vec2 rasterOf(mat4 cameraToRaster, vec4 point) {
   return raster.xy / raster.w;
 }
 
-// The homogeneous position, in another frame's raster (or camera space), of the point seen at
-// raster `position` at planar depth `depth`, through the matrices of resolve/camera's
-// frameCarry(): about half the work of cameraPointOf() and rasterOf() together.
-vec4 carried(mat4 alongDepth, mat4 offset, vec2 position, float depth) {
-  vec4 along = alongDepth * vec4(position, 1.0, 0.0);
-  return isinf(depth) ? along : depth * along + offset * vec4(position, 1.0, 1.0);
+// The homogeneous raster position (x, y, w) in another frame of the point seen at raster
+// `position` at planar depth `depth`, through the rows of resolve/camera's frameCarry() that
+// raster needs (resolve/window_resolver's xywRows()): about half the work of cameraPointOf()
+// and rasterOf() together.
+vec3 carried(mat3 alongDepth, mat3 offset, vec2 position, float depth) {
+  vec3 along = alongDepth * vec3(position, 1.0);
+  return isinf(depth) ? along : depth * along + offset * vec3(position, 1.0);
 }

@@ -40,19 +40,21 @@ uniform bool uTargetHasCamera;
 uniform float uReconstruction[9];  // t's 3x3 unjitter weights (resolve/reconstruction_filter)
 
 // Source frames ordered by distance: t-1, t+1, t-2, t+2, ... (the chains walk outward). The
-// matrices carry raster positions at a planar depth (resolve/camera: frameCarry): source to
-// target raster and target camera (row z: the depth there), and target to source raster.
+// matrices carry raster positions at a planar depth (resolve/camera: frameCarry), only the
+// rows used: source to target raster (x, y, w) and target depth, and target to source raster
+// (x, y, w). The loop below indexes these arrays by its counter, which llvmpipe loads lane by
+// lane: every scalar left out is time saved.
 uniform int uSourceCount;
 uniform int uSourceLayer[MAX_SOURCES];
 uniform int uSourceOffset[MAX_SOURCES];  // s - t
 uniform vec2 uSourceJitter[MAX_SOURCES];
 uniform int uSourceHasCamera[MAX_SOURCES];  // s and t both have cameras
-uniform mat4 uToTargetAlong[MAX_SOURCES];
-uniform mat4 uToTargetOffset[MAX_SOURCES];
-uniform vec4 uToTargetDepthAlong[MAX_SOURCES];
-uniform vec4 uToTargetDepthOffset[MAX_SOURCES];
-uniform mat4 uFromTargetAlong[MAX_SOURCES];
-uniform mat4 uFromTargetOffset[MAX_SOURCES];
+uniform mat3 uToTargetAlong[MAX_SOURCES];
+uniform mat3 uToTargetOffset[MAX_SOURCES];
+uniform vec3 uToTargetDepthAlong[MAX_SOURCES];
+uniform vec3 uToTargetDepthOffset[MAX_SOURCES];
+uniform mat3 uFromTargetAlong[MAX_SOURCES];
+uniform mat3 uFromTargetOffset[MAX_SOURCES];
 
 uniform float uSigma;
 uniform float uFalloff;
@@ -79,8 +81,8 @@ float gSourceLumaSquares;
 float gCandidates, gHidden, gDisagreeing;
 // The current source's uniforms, read once: indexing uniform arrays by a loop variable costs a
 // load per lane on llvmpipe each time.
-mat4 gToTargetAlong, gToTargetOffset;
-vec4 gToTargetDepthAlong, gToTargetDepthOffset;
+mat3 gToTargetAlong, gToTargetOffset;
+vec3 gToTargetDepthAlong, gToTargetDepthOffset;
 vec2 gSourceJitter;
 int gSourceLayer;  // diagnostics: candidates, hidden, weight left out
 
@@ -115,10 +117,10 @@ void addStaticBlock(int k, ivec2 corner, bool skip, ivec2 taken, float frameWeig
   int layer = gSourceLayer;
   vec2 first = vec2(corner) + 0.5 + gSourceJitter;
   // Carried positions are affine in the sample position: one product per block, columns after.
-  vec4 along = gToTargetAlong * vec4(first, 1.0, 0.0);
-  vec4 offset = gToTargetOffset * vec4(first, 1.0, 1.0);
-  float depthAlong = dot(gToTargetDepthAlong, vec4(first, 1.0, 0.0));
-  float depthOffset = dot(gToTargetDepthOffset, vec4(first, 1.0, 1.0));
+  vec3 along = gToTargetAlong * vec3(first, 1.0);
+  vec3 offset = gToTargetOffset * vec3(first, 1.0);
+  float depthAlong = dot(gToTargetDepthAlong, vec3(first, 1.0));
+  float depthOffset = dot(gToTargetDepthOffset, vec3(first, 1.0));
   for (int i = 0; i < 4; ++i) {
     ivec2 step = ivec2(i & 1, i >> 1);
     ivec2 n = corner + step;
@@ -128,10 +130,10 @@ void addStaticBlock(int k, ivec2 corner, bool skip, ivec2 taken, float frameWeig
     float depth = entry.depth;
     if (depth < 0.0) continue;  // moving samples are the chains'
     vec2 s = vec2(step);
-    vec4 a = along + s.x * gToTargetAlong[0] + s.y * gToTargetAlong[1];
-    vec4 h = isinf(depth) ? a : depth * a + offset + s.x * gToTargetOffset[0] +
+    vec3 a = along + s.x * gToTargetAlong[0] + s.y * gToTargetAlong[1];
+    vec3 h = isinf(depth) ? a : depth * a + offset + s.x * gToTargetOffset[0] +
                                     s.y * gToTargetOffset[1];
-    float weight = spatialWeight(h.xy / h.w - gPosition, uSigma);
+    float weight = spatialWeight(h.xy * (1.0 / h.z) - gPosition, uSigma);
     if (weight < 1e-3) continue;
     gCandidates += 1.0;
     float carriedDepth = depth;
@@ -224,12 +226,23 @@ void main() {
   // The surfaces the pixel may be looking at: the 3x3's near one and, when it spans two
   // depths, its far one. Each surface's depth is the mean of its samples', which on a slanted
   // surface is the depth at the pixel centre; its nearest or farthest would miss the samples
-  // that land here by the slope times the parallax.
+  // that land here by the slope times the parallax. A 3x3 whose depths lie on a plane (within
+  // `split` of what its centre row and column predict) is one surface however steep: a floor
+  // at a grazing angle, a wall seen obliquely.
   float split = max(uDepthTolerance, 0.01);
   bool twoSurfaces = !isinf(gNearest) && gFarthest > gNearest * (1.0 + split);
+  if (twoSurfaces && !isinf(gFarthest)) {
+    vec2 slope = 0.5 * vec2(depths[5] - depths[3], depths[7] - depths[1]);
+    float offPlane = 0.0;
+    for (int i = 0; i < 9; ++i) {
+      vec2 step = vec2(float(i % 3 - 1), float(i / 3 - 1));
+      offPlane = max(offPlane, abs(depths[i] - depths[4] - dot(slope, step)));
+    }
+    twoSurfaces = offPlane > split * depths[4];
+  }
   float nearSum = 0.0, nearCount = 0.0, farSum = 0.0, farCount = 0.0;
   for (int i = 0; i < 9; ++i) {
-    if (depths[i] <= gNearest * (1.0 + split)) {
+    if (!twoSurfaces || depths[i] <= gNearest * (1.0 + split)) {
       nearSum += depths[i];
       nearCount += 1.0;
     } else if (!isinf(depths[i]) && depths[i] >= gFarthest / (1.0 + split)) {
@@ -264,8 +277,8 @@ void main() {
     gToTargetOffset = uToTargetOffset[k];
     gToTargetDepthAlong = uToTargetDepthAlong[k];
     gToTargetDepthOffset = uToTargetDepthOffset[k];
-    mat4 fromTargetAlong = uFromTargetAlong[k];
-    mat4 fromTargetOffset = uFromTargetOffset[k];
+    mat3 fromTargetAlong = uFromTargetAlong[k];
+    mat3 fromTargetOffset = uFromTargetOffset[k];
     int offsetFrames = uSourceOffset[k];
     int layer = gSourceLayer;
     vec2 jitter = gSourceJitter;
@@ -274,18 +287,21 @@ void main() {
     gSourceSum = vec4(0.0);
     gSourceLumaSquares = 0.0;
     if (uSourceHasCamera[k] != 0 && uTargetHasCamera) {
-      vec4 nearSource = carried(fromTargetAlong, fromTargetOffset, gPosition, nearDepth);
-      ivec2 first = cornerTexel(nearSource.xy / nearSource.w, jitter);
-      addStaticBlock(k, first, false, first, frameWeight);
-      // The second surface: the 3x3's far one, else a thin feature found in nearer frames.
-      // llvmpipe runs both sides of a branch for a group of pixels, so there is one block of
-      // this kind, not one for each.
-      bool thin = gThinDepth < nearDepth * (1.0 - split);
-      if (twoSurfaces || thin) {
-        vec4 secondSource = carried(fromTargetAlong, fromTargetOffset, gPosition,
-                                    twoSurfaces ? farDepth : gThinDepth);
-        addStaticBlock(k, cornerTexel(secondSource.xy / secondSource.w, jitter), true, first,
-                       frameWeight);
+      // The near surface's block, then, where the pixel needs it, a second surface's: the
+      // 3x3's far one, else a thin feature found in nearer frames (or in this block). A loop
+      // rather than an if: llvmpipe runs an if's body for a whole group of pixels whether or
+      // not any of them takes it, but leaves a loop as soon as none of them goes on, so groups
+      // with one surface skip the second block.
+      ivec2 first = ivec2(0);
+      float surfaceDepth = nearDepth;
+      for (int surface = 0; surface < 2; ++surface) {
+        vec3 source = carried(fromTargetAlong, fromTargetOffset, gPosition, surfaceDepth);
+        ivec2 corner = cornerTexel(source.xy / source.z, jitter);
+        if (surface == 0) first = corner;
+        addStaticBlock(k, corner, surface == 1, first, frameWeight);
+        bool thin = gThinDepth < nearDepth * (1.0 - split);
+        if (!(twoSurfaces || thin)) break;
+        surfaceDepth = twoSurfaces ? farDepth : gThinDepth;
       }
     }
 

@@ -368,6 +368,16 @@ void Program::setVec2Array(const char* name, const float* xy, int count) const {
   if (at >= 0) handle_.gl().ProgramUniform2fv(handle_.id(), at, count, xy);
 }
 
+void Program::setVec3Array(const char* name, const float* xyz, int count) const {
+  const GLint at = location(name);
+  if (at >= 0) handle_.gl().ProgramUniform3fv(handle_.id(), at, count, xyz);
+}
+
+void Program::setMatrix3Array(const char* name, const float* columnMajor, int count) const {
+  const GLint at = location(name);
+  if (at >= 0) handle_.gl().ProgramUniformMatrix3fv(handle_.id(), at, count, GL_FALSE, columnMajor);
+}
+
 void Program::setVec4Array(const char* name, const float* xyzw, int count) const {
   const GLint at = location(name);
   if (at >= 0) handle_.gl().ProgramUniform4fv(handle_.id(), at, count, xyzw);

@@ -188,7 +188,9 @@ class Program {
   void setArray(const char* name, const float* values, int count) const;  // float name[count]
   void setIntArray(const char* name, const int* values, int count) const;  // int name[count]
   void setVec2Array(const char* name, const float* xy, int count) const;   // vec2 name[count]
+  void setVec3Array(const char* name, const float* xyz, int count) const;   // vec3 name[count]
   void setVec4Array(const char* name, const float* xyzw, int count) const;  // vec4 name[count]
+  void setMatrix3Array(const char* name, const float* columnMajor, int count) const;
   void setMatrix4Array(const char* name, const float* columnMajor, int count) const;
 
   GLuint id() const { return handle_.id(); }

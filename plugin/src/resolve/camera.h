@@ -41,7 +41,7 @@ ReprojectionMatrices reprojectionMatrices(const FrameCamera& current, const Fram
 // d A (x, y, 1) + G (x, y, 1) for pinhole (G = 0) and orthographic cameras alike, so the
 // other frame's homogeneous position is d alongDepth (x, y, 1, 0) + offset (x, y, 1, 1), and
 // at infinite depth (a direction) alongDepth (x, y, 1, 0) alone. glsl/camera_geometry.glsl's
-// carried() applies it.
+// carried() applies the rows a raster position needs (x, y, w; the window gather's uniforms).
 struct CarryMatrices {
   glm::mat4 alongDepth{0.0f};
   glm::mat4 offset{0.0f};

@@ -339,11 +339,19 @@ struct WindowResolver::Impl {
     std::vector<int> layers, offsets, hasCamera;
     std::vector<float> jitters, toTargetAlong, toTargetOffset, toTargetDepthAlong,
         toTargetDepthOffset, fromTargetAlong, fromTargetOffset;
-    auto appendMatrix = [](std::vector<float>& to, const glm::mat4& m) {
-      to.insert(to.end(), &m[0][0], &m[0][0] + 16);
+    // Only the rows the gather uses, as 3x3 over (x, y, 1): a carry's offset is always applied
+    // to (x, y, 1, 1), so its last two columns fold into one.
+    auto appendRows = [](std::vector<float>& to, const glm::mat4& m, std::initializer_list<int> rows,
+                         bool offset) {
+      for (int column = 0; column < 3; ++column) {
+        for (int row : rows) to.push_back(m[column][row] + (offset && column == 2 ? m[3][row] : 0.0f));
+      }
     };
-    auto appendRowZ = [](std::vector<float>& to, const glm::mat4& m) {
-      for (int column = 0; column < 4; ++column) to.push_back(m[column][2]);
+    auto appendRaster = [&](std::vector<float>& to, const glm::mat4& m, bool offset) {
+      appendRows(to, m, {0, 1, 3}, offset);  // raster x, y and w
+    };
+    auto appendDepth = [&](std::vector<float>& to, const glm::mat4& m, bool offset) {
+      appendRows(to, m, {2}, offset);  // camera z: the planar depth
     };
     // Nearest first, behind before ahead: the shader's chains walk outward in this order, and
     // the sum's order is fixed by the window alone (never by what else the ring holds).
@@ -367,12 +375,12 @@ struct WindowResolver::Impl {
           toTarget = frameCarry(*s.camera, *target.camera, s.window, s.ndc);
           fromTarget = frameCarry(*target.camera, *s.camera, target.window, target.ndc);
         }
-        appendMatrix(toTargetAlong, toTarget.toRaster.alongDepth);
-        appendMatrix(toTargetOffset, toTarget.toRaster.offset);
-        appendRowZ(toTargetDepthAlong, toTarget.toCamera.alongDepth);
-        appendRowZ(toTargetDepthOffset, toTarget.toCamera.offset);
-        appendMatrix(fromTargetAlong, fromTarget.toRaster.alongDepth);
-        appendMatrix(fromTargetOffset, fromTarget.toRaster.offset);
+        appendRaster(toTargetAlong, toTarget.toRaster.alongDepth, false);
+        appendRaster(toTargetOffset, toTarget.toRaster.offset, true);
+        appendDepth(toTargetDepthAlong, toTarget.toCamera.alongDepth, false);
+        appendDepth(toTargetDepthOffset, toTarget.toCamera.offset, true);
+        appendRaster(fromTargetAlong, fromTarget.toRaster.alongDepth, false);
+        appendRaster(fromTargetOffset, fromTarget.toRaster.offset, true);
       }
     }
     const int count = int(layers.size());
@@ -382,12 +390,12 @@ struct WindowResolver::Impl {
     p.setIntArray("uSourceOffset", offsets.data(), count);
     p.setVec2Array("uSourceJitter", jitters.data(), count);
     p.setIntArray("uSourceHasCamera", hasCamera.data(), count);
-    p.setMatrix4Array("uToTargetAlong", toTargetAlong.data(), count);
-    p.setMatrix4Array("uToTargetOffset", toTargetOffset.data(), count);
-    p.setVec4Array("uToTargetDepthAlong", toTargetDepthAlong.data(), count);
-    p.setVec4Array("uToTargetDepthOffset", toTargetDepthOffset.data(), count);
-    p.setMatrix4Array("uFromTargetAlong", fromTargetAlong.data(), count);
-    p.setMatrix4Array("uFromTargetOffset", fromTargetOffset.data(), count);
+    p.setMatrix3Array("uToTargetAlong", toTargetAlong.data(), count);
+    p.setMatrix3Array("uToTargetOffset", toTargetOffset.data(), count);
+    p.setVec3Array("uToTargetDepthAlong", toTargetDepthAlong.data(), count);
+    p.setVec3Array("uToTargetDepthOffset", toTargetDepthOffset.data(), count);
+    p.setMatrix3Array("uFromTargetAlong", fromTargetAlong.data(), count);
+    p.setMatrix3Array("uFromTargetOffset", fromTargetOffset.data(), count);
   }
 
   TypedImage resolve(int frame, int first, int last, SampleType outputType) {
