@@ -16,6 +16,7 @@
 #include <type_traits>
 
 #include "io/aov_conversion.h"
+#include "io/part_channels.h"
 #include "io/sequence_pattern.h"
 #include "taa/error.h"
 
@@ -125,15 +126,11 @@ int findPart(const OpenExr& file, const AovSource& source, const std::string& ao
   return 0;
 }
 
-// Reads `names` of part `part` into `out`: interleaved, `outChannels` per pixel (the first
-// names.size() of them are written), converted to `type` (OIIO converts; none when the file
-// stores that type). Channels are found by name: EXR sorts them, so file order differs from the
-// asked order. In the usual case, the asked channels lie in file order side by side and OIIO
-// reads them straight into `out`; otherwise one read covers the smallest contiguous range
-// holding every asked channel and they are picked out of it.
-void readChannelsInto(OpenExr& file, int part, const std::vector<std::string>& names,
-                      const std::string& aovName, int frame, OIIO::TypeDesc type, void* out,
-                      int outChannels) {
+// The indices of `names` in part `part`, in the order asked; a missing channel is an error
+// listing what the file has.
+std::vector<int> channelIndices(const OpenExr& file, int part,
+                                const std::vector<std::string>& names, const std::string& aovName,
+                                int frame) {
   const OIIO::ImageSpec& spec = file.parts[std::size_t(part)];
   std::vector<int> indices;
   std::vector<std::string> missing;
@@ -155,49 +152,44 @@ void readChannelsInto(OpenExr& file, int part, const std::vector<std::string>& n
                     joinNames(missing) + "; channels available: " + available,
                 {file.path, frame, joinNames(missing)});
   }
+  return indices;
+}
 
-  const int channelBegin = *std::min_element(indices.begin(), indices.end());
-  const int channelEnd = *std::max_element(indices.begin(), indices.end()) + 1;
-  const int stride = channelEnd - channelBegin;
-  bool inFileOrder = stride == int(indices.size());
-  for (std::size_t c = 0; c < indices.size() && inFileOrder; ++c) {
-    inFileOrder = indices[c] == channelBegin + int(c);
+// A frame's pixel reads, gathered by file and part before any is made, so that a part several
+// AOVs share (a multilayer file's colour, depth and vectors) is decoded once.
+class PartReads {
+ public:
+  // `names` of part `part` of `file` into `out` (interleaved, `outChannels` a pixel, the first
+  // names.size() written), as `type`. Missing channels are an error at once.
+  void add(OpenExr& file, int part, const std::vector<std::string>& names,
+           const std::string& aovName, int frame, OIIO::TypeDesc type, void* out,
+           int outChannels) {
+    ChannelRequest request{aovName, channelIndices(file, part, names, aovName, frame), names,
+                           type, out, outChannels};
+    for (Group& group : groups_) {
+      if (group.file == &file && group.part == part) {
+        group.requests.push_back(std::move(request));
+        return;
+      }
+    }
+    groups_.push_back({&file, part, {std::move(request)}});
   }
-  const std::size_t sampleSize = type.size();
-  const std::size_t pixelCount = std::size_t(spec.width) * spec.height;
-  std::vector<unsigned char> range;
-  if (!inFileOrder) range.resize(pixelCount * std::size_t(stride) * sampleSize);
-  void* target = inFileOrder ? out : range.data();
-  const OIIO::stride_t xstride =
-      OIIO::stride_t((inFileOrder ? outChannels : stride) * sampleSize);
-  // OIIO may report a failure only through its error state, so check both.
-  const bool ok = file.input->read_image(part, 0, channelBegin, channelEnd, type, target, xstride);
-  if (!ok || file.input->has_error()) {
-    std::string reason = file.input->geterror();
-    if (reason.empty()) reason = "unknown error";
-    throw Error("cannot read the " + aovName + " pixels (truncated or corrupt file?): " + reason,
-                {file.path, frame, joinNames(names)});
-  }
-  if (inFileOrder) return;
-  auto* destination = static_cast<unsigned char*>(out);
-  for (std::size_t pixel = 0; pixel < pixelCount; ++pixel) {
-    for (std::size_t c = 0; c < indices.size(); ++c) {
-      std::memcpy(destination + (pixel * outChannels + c) * sampleSize,
-                  &range[(pixel * stride + std::size_t(indices[c] - channelBegin)) * sampleSize],
-                  sampleSize);
+
+  void readAll(int frame) {
+    for (const Group& group : groups_) {
+      readPartChannels(*group.file->input, group.file->path, frame, group.part,
+                       group.file->parts[std::size_t(group.part)], group.requests);
     }
   }
-}
 
-// `names` as a float image of as many channels.
-Image readFloatChannels(OpenExr& file, int part, const std::vector<std::string>& names,
-                        const std::string& aovName, int frame) {
-  const OIIO::ImageSpec& spec = file.parts[std::size_t(part)];
-  Image image(spec.width, spec.height, int(names.size()));
-  readChannelsInto(file, part, names, aovName, frame, OIIO::TypeFloat, image.pixels.data(),
-                   image.channels);
-  return image;
-}
+ private:
+  struct Group {
+    OpenExr* file;
+    int part;
+    std::vector<ChannelRequest> requests;
+  };
+  std::vector<Group> groups_;
+};
 
 // Opens files once per frame, however many AOVs share them.
 class FileSet {
@@ -289,23 +281,27 @@ void finishRgba(ImageOf<T>& rgba, int inputChannels, FrameData& data) {
   }
 }
 
-// The colour channels of `source` as RGBA in their stored type (see colorSampleType). The fourth
-// (alpha) is optional: a file without it reads as opaque, A = 1.
-TypedImage readColor(OpenExr& file, int part, const AovSource& source, int frame,
-                     FrameData& data) {
+// The colour channels of `source` as RGBA in their stored type (see colorSampleType), to be
+// filled by `reads`. The fourth (alpha) is optional: a file without it reads as opaque, A = 1
+// (finishColor). Returns how many channels are read.
+int addColorRead(PartReads& reads, OpenExr& file, int part, const AovSource& source, int frame,
+                 TypedImage& rgba) {
   const OIIO::ImageSpec& spec = file.parts[std::size_t(part)];
   std::vector<std::string> names = source.channels;
   if (names.size() == 4 && !hasChannels(spec, {names[3]})) names.pop_back();
   const SampleType type = colorSampleType(spec, names);
-  TypedImage rgba(spec.width, spec.height, 4, type);
-  readChannelsInto(file, part, names, "color", frame,
-                   type == SampleType::Half ? OIIO::TypeHalf : OIIO::TypeFloat, rgba.data(), 4);
-  if (HalfImage* half = rgba.halves()) {
-    finishRgba(*half, int(names.size()), data);
+  rgba = TypedImage(spec.width, spec.height, 4, type);
+  reads.add(file, part, names, "color", frame,
+            type == SampleType::Half ? OIIO::TypeHalf : OIIO::TypeFloat, rgba.data(), 4);
+  return int(names.size());
+}
+
+void finishColor(FrameData& data, int inputChannels) {
+  if (HalfImage* half = data.color.halves()) {
+    finishRgba(*half, inputChannels, data);
   } else {
-    finishRgba(*rgba.floats(), int(names.size()), data);
+    finishRgba(*data.color.floats(), inputChannels, data);
   }
-  return rgba;
 }
 
 // The header's camera, if it has both matrices. EXR matrices act on row vectors (p' = p M) and
@@ -360,11 +356,11 @@ PixelRay pixelRayFor(const FrameData& data, const DepthConvention& convention,
               {depthPath, data.frame, ""});
 }
 
-// Channels of the color part whose names match any pattern, in file order, types kept.
-ExtraChannels readPassthrough(OpenExr& file, int part, const std::vector<std::string>& patterns,
-                              int frame) {
-  ExtraChannels extra;
-  if (patterns.empty()) return extra;
+// Channels of the color part whose names match any pattern, in file order, types kept, to be
+// filled by `reads`.
+void addPassthroughRead(PartReads& reads, OpenExr& file, int part,
+                        const std::vector<std::string>& patterns, int frame, ExtraChannels& extra) {
+  if (patterns.empty()) return;
   const OIIO::ImageSpec& spec = file.parts[std::size_t(part)];
   for (int c = 0; c < spec.nchannels; ++c) {
     const std::string& name = spec.channelnames[std::size_t(c)];
@@ -376,10 +372,10 @@ ExtraChannels readPassthrough(OpenExr& file, int part, const std::vector<std::st
     extra.formats.push_back(spec.channelformat(c) == OIIO::TypeHalf ? OIIO::TypeHalf
                                                                    : OIIO::TypeFloat);
   }
-  if (!extra.names.empty()) {
-    extra.image = readFloatChannels(file, part, extra.names, "color", frame);
-  }
-  return extra;
+  if (extra.names.empty()) return;
+  extra.image = Image(spec.width, spec.height, int(extra.names.size()));
+  reads.add(file, part, extra.names, "color", frame, OIIO::TypeFloat, extra.image.pixels.data(),
+            extra.image.channels);
 }
 
 }  // namespace
@@ -397,34 +393,49 @@ FrameData readFrame(const AovLayout& layout, int frame, const CameraInputs& came
   data.colorPath = expandFramePattern(layout.color.pattern, frame);
 
   FileSet files(frame);
+  PartReads reads;
   OpenExr& colorFile = files.get(data.colorPath, "color");
-  AovSource requiredColor = layout.color;  // alpha is optional (readColor)
+  AovSource requiredColor = layout.color;  // alpha is optional (addColorRead)
   requiredColor.channels.resize(3);
   const int colorPart = findPart(colorFile, requiredColor, "color", frame);
   data.colorSpec = colorFile.parts[std::size_t(colorPart)];
-  data.color = readColor(colorFile, colorPart, layout.color, frame, data);
+  const int colorChannels =
+      addColorRead(reads, colorFile, colorPart, layout.color, frame, data.color);
   data.window = rasterWindow(data.colorSpec);
   chooseCamera(data, cameras);
-  data.passthrough = readPassthrough(colorFile, colorPart, layout.passthrough, frame);
+  addPassthroughRead(reads, colorFile, colorPart, layout.passthrough, frame, data.passthrough);
 
+  const OpenExr* depthFile = nullptr;
   if (layout.depth) {
     OpenExr& file = files.get(aovPath(*layout.depth, data.colorPath, frame), "depth");
     const int part = findPart(file, *layout.depth, "depth", frame);
     requireSameWindow(file, part, data.colorSpec, data.colorPath, "depth", frame);
-    data.depth = readFloatChannels(file, part, layout.depth->channels, "depth", frame);
+    data.depth = Image(data.colorSpec.width, data.colorSpec.height, 1);
+    reads.add(file, part, layout.depth->channels, "depth", frame, OIIO::TypeFloat,
+              data.depth.pixels.data(), 1);
+    depthFile = &file;
+  }
+  if (layout.motion) {
+    OpenExr& file = files.get(aovPath(*layout.motion, data.colorPath, frame), "motion");
+    const int part = findPart(file, *layout.motion, "motion", frame);
+    requireSameWindow(file, part, data.colorSpec, data.colorPath, "motion", frame);
+    data.motion = Image(data.colorSpec.width, data.colorSpec.height, 2);
+    reads.add(file, part, layout.motion->channels, "motion", frame, OIIO::TypeFloat,
+              data.motion.pixels.data(), 2);
+    data.motionPath = file.path;
+  }
+
+  reads.readAll(frame);
+  finishColor(data, colorChannels);
+  if (depthFile) {
     if (layout.depthConvention.kind == DepthKind::Radial) {
-      radialToPlanar(data.depth, pixelRayFor(data, layout.depthConvention, file.path),
+      radialToPlanar(data.depth, pixelRayFor(data, layout.depthConvention, depthFile->path),
                      layout.depthConvention.noHitAbove);
     } else {
       convertDepth(data.depth, layout.depthConvention);
     }
   }
   if (layout.motion) {
-    OpenExr& file = files.get(aovPath(*layout.motion, data.colorPath, frame), "motion");
-    const int part = findPart(file, *layout.motion, "motion", frame);
-    requireSameWindow(file, part, data.colorSpec, data.colorPath, "motion", frame);
-    data.motion = readFloatChannels(file, part, layout.motion->channels, "motion", frame);
-    data.motionPath = file.path;
     data.nonFiniteMotionValues = convertMotion(data.motion, layout.motionConvention, data.window);
   }
   return data;

@@ -1,0 +1,159 @@
+#include "io/part_channels.h"
+
+#include <Imath/half.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <cstring>
+
+#include "taa/error.h"
+
+namespace taa::io {
+namespace {
+
+// Rows decoded at a time: a whole number of chunks, so no chunk is decoded twice, and few
+// enough that the band stays small (64 rows of 1920 pixels of 7 channels: 3.4 MB).
+int rowsPerBand(const OIIO::ImageSpec& spec) {
+  constexpr int kRows = 64;  // a multiple of every scanline codec's chunk height but DWAB's
+  if (spec.tile_height > 0) {
+    return (kRows + spec.tile_height - 1) / spec.tile_height * spec.tile_height;
+  }
+  const std::string compression = spec.get_string_attribute("compression");
+  return compression.rfind("dwab", 0) == 0 ? 256 : kRows;
+}
+
+bool halfOrFloat(OIIO::TypeDesc type) {
+  return type == OIIO::TypeHalf || type == OIIO::TypeFloat;
+}
+
+// "a", "a and b", "a, b and c".
+std::string listed(const std::vector<std::string>& items) {
+  std::string text;
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    text += (i == 0 ? "" : i + 1 == items.size() ? " and " : ", ") + items[i];
+  }
+  return text;
+}
+
+std::string joined(const std::vector<std::string>& items) {
+  std::string text;
+  for (const std::string& item : items) text += (text.empty() ? "" : ", ") + item;
+  return text;
+}
+
+// One decoding pass: channels [begin, end) of every row, in `format` (TypeUnknown: each
+// channel in its file type), feeding `requests`.
+struct Pass {
+  OIIO::TypeDesc format;
+  std::vector<const ChannelRequest*> requests;
+};
+
+// Copies `count` values from `from` (every `fromStride` bytes, of type `fromType`) to `to`
+// (every `toStride` bytes, of type `toType`). Half widens to float exactly; float narrows to
+// half only for values that came from half.
+void copyValues(const unsigned char* from, std::size_t fromStride, OIIO::TypeDesc fromType,
+                unsigned char* to, std::size_t toStride, OIIO::TypeDesc toType,
+                std::size_t count) {
+  if (fromType == toType) {
+    const std::size_t size = fromType.size();
+    for (std::size_t i = 0; i < count; ++i) {
+      std::memcpy(to + i * toStride, from + i * fromStride, size);
+    }
+  } else if (fromType == OIIO::TypeHalf) {
+    for (std::size_t i = 0; i < count; ++i) {
+      Imath::half h;
+      std::memcpy(&h, from + i * fromStride, sizeof h);
+      const float f = h;
+      std::memcpy(to + i * toStride, &f, sizeof f);
+    }
+  } else {
+    for (std::size_t i = 0; i < count; ++i) {
+      float f;
+      std::memcpy(&f, from + i * fromStride, sizeof f);
+      const Imath::half h(f);
+      std::memcpy(to + i * toStride, &h, sizeof h);
+    }
+  }
+}
+
+}  // namespace
+
+void readPartChannels(OIIO::ImageInput& input, const std::string& path, int frame, int part,
+                      const OIIO::ImageSpec& spec, const std::vector<ChannelRequest>& requests) {
+  // Requests whose channels are all half or float share one pass in the file's types; any
+  // other is decoded on its own, converted to its type by OIIO.
+  std::vector<Pass> passes;
+  Pass shared{OIIO::TypeUnknown, {}};
+  for (const ChannelRequest& request : requests) {
+    const bool native = std::all_of(request.channels.begin(), request.channels.end(),
+                                    [&](int c) { return halfOrFloat(spec.channelformat(c)); });
+    if (native) {
+      shared.requests.push_back(&request);
+    } else {
+      passes.push_back({request.type, {&request}});
+    }
+  }
+  if (!shared.requests.empty()) passes.insert(passes.begin(), shared);
+
+  const std::size_t width = std::size_t(spec.width);
+  const int bandRows = rowsPerBand(spec);
+  std::vector<unsigned char> band;
+  for (const Pass& pass : passes) {
+    int begin = spec.nchannels, end = 0;
+    for (const ChannelRequest* request : pass.requests) {
+      for (int c : request->channels) {
+        begin = std::min(begin, c);
+        end = std::max(end, c + 1);
+      }
+    }
+    // Where each channel of the range lies within a decoded pixel, and its type there.
+    std::vector<std::size_t> offset(std::size_t(end - begin));
+    std::vector<OIIO::TypeDesc> type(std::size_t(end - begin));
+    std::size_t pixelBytes = 0;
+    for (int c = begin; c < end; ++c) {
+      type[std::size_t(c - begin)] =
+          pass.format == OIIO::TypeUnknown ? spec.channelformat(c) : pass.format;
+      offset[std::size_t(c - begin)] = pixelBytes;
+      pixelBytes += type[std::size_t(c - begin)].size();
+    }
+    band.resize(std::size_t(bandRows) * width * pixelBytes);
+
+    for (int y = spec.y; y < spec.y + spec.height; y += bandRows) {
+      const int rows = std::min(bandRows, spec.y + spec.height - y);
+      // OIIO may report a failure only through its error state, so check both.
+      // OIIO's OpenEXR reader reads tiled files by tiles only; a band is whole tile rows.
+      const bool ok =
+          spec.tile_height > 0
+              ? input.read_tiles(part, 0, spec.x, spec.x + spec.width, y, y + rows, spec.z,
+                                 spec.z + 1, begin, end, pass.format, band.data())
+              : input.read_scanlines(part, 0, y, y + rows, spec.z, begin, end, pass.format,
+                                     band.data());
+      if (!ok || input.has_error()) {
+        std::string reason = input.geterror();
+        if (reason.empty()) reason = "unknown error";
+        std::vector<std::string> aovs, names;
+        for (const ChannelRequest* request : pass.requests) {
+          aovs.push_back(request->aovName);
+          names.insert(names.end(), request->names.begin(), request->names.end());
+        }
+        throw Error("cannot read the " + listed(aovs) +
+                        " pixels (truncated or corrupt file?): " + reason,
+                    {path, frame, joined(names)});
+      }
+      const std::size_t count = std::size_t(rows) * width;
+      const std::size_t firstPixel = std::size_t(y - spec.y) * width;
+      for (const ChannelRequest* request : pass.requests) {
+        const std::size_t size = request->type.size();
+        auto* out = static_cast<unsigned char*>(request->out);
+        for (std::size_t k = 0; k < request->channels.size(); ++k) {
+          const std::size_t c = std::size_t(request->channels[k] - begin);
+          copyValues(band.data() + offset[c], pixelBytes, type[c],
+                     out + (firstPixel * std::size_t(request->outChannels) + k) * size,
+                     std::size_t(request->outChannels) * size, request->type, count);
+        }
+      }
+    }
+  }
+}
+
+}  // namespace taa::io
