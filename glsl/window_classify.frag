@@ -8,7 +8,8 @@
 // whose previous frame is not in the window (the window's first) is checked forward instead:
 // the camera carries the sample into the next frame, whose vector there must lead back to it.
 // The frame's samples are read from its layer (the depth's sign, from an earlier
-// classification, ignored) and written to another.
+// classification, ignored) and written to another, their motion copied to that layer of the
+// motion ring.
 
 #include "camera_geometry.glsl"
 #include "window_ring.glsl"
@@ -17,6 +18,7 @@
 // forward against the next frame, 3 a camera but no neighbour in the window (all static).
 uniform int uClassifyMode;
 uniform usampler2DArray uRing;   // the ring's samples
+uniform usampler2DArray uRingMotion;  // their motion
 uniform int uLayer;              // the frame's layer
 uniform int uOtherLayer;         // mode 2: the next frame's layer
 uniform vec2 uJitter;            // the frame's sample offset
@@ -26,6 +28,7 @@ uniform mat4 uCameraToOtherCamera;  // mode 2: -> the next frame's camera space
 uniform float uTolerance;        // px
 
 layout(location = 0) out uvec4 outSample;
+layout(location = 1) out uint outMotion;
 
 bool isStatic(ivec2 pixel, float depth, vec2 vector) {
   if (uClassifyMode == 0) return false;
@@ -46,13 +49,16 @@ bool isStatic(ivec2 pixel, float depth, vec2 vector) {
   // passing in front by parallax), its vector is that thing's; static is the common case.
   float expected = (uCameraToOtherCamera * point).z;
   if (abs(abs(ringDepth(nextTexel)) - expected) > 0.05 * expected) return true;
-  return distance(other + ringMotion(nextTexel), position) <= uTolerance;
+  vec2 nextVector = unpackRingMotion(texelFetch(uRingMotion, ivec3(next, uOtherLayer), 0).r);
+  return distance(other + nextVector, position) <= uTolerance;
 }
 
 void main() {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
   uvec4 texel = texelFetch(uRing, ivec3(pixel, uLayer), 0);
+  uint motion = texelFetch(uRingMotion, ivec3(pixel, uLayer), 0).r;
   float depth = abs(ringDepth(texel));
-  bool still = isStatic(pixel, depth, ringMotion(texel));
-  outSample = uvec4(texel.xy, floatBitsToUint(still ? depth : -depth), texel.w);
+  bool still = isStatic(pixel, depth, unpackRingMotion(motion));
+  outSample = withRingDepth(texel, still ? depth : -depth);
+  outMotion = motion;
 }

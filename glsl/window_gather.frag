@@ -23,6 +23,7 @@
 // OpenColorIO and inserted ahead of this file.
 
 #include "color_space.glsl"
+#include "finite_range.glsl"
 #include "camera_geometry.glsl"
 #include "window_ring.glsl"
 #include "window_weights.glsl"
@@ -33,6 +34,7 @@
 #endif            // (llvmpipe would run it, masked, for every pixel)
 
 uniform usampler2DArray uRing;  // each frame's jittered samples (window_ring.glsl)
+uniform usampler2DArray uRingMotion;  // and their motion, at the same layer
 
 uniform int uTargetLayer;
 uniform vec2 uTargetJitter;
@@ -90,6 +92,10 @@ bool onScreen(ivec2 n) { return all(greaterThanEqual(n, ivec2(0))) && all(lessTh
 
 RingSample ringSample(ivec2 n, int layer) {
   return unpackRingSample(texelFetch(uRing, ivec3(n, layer), 0));
+}
+
+vec2 motionAt(ivec2 n, int layer) {
+  return unpackRingMotion(texelFetch(uRingMotion, ivec3(n, layer), 0).r);
 }
 
 // The texel whose sample (at texel + 0.5 + jitter) is the lower-left of the four around `p`.
@@ -191,7 +197,7 @@ void main() {
   gThinDepth = 1.0 / 0.0;
   float depths[9];
   float movingDepth = 1.0 / 0.0;
-  vec2 startMotion = vec2(0.0);
+  ivec2 movingAt = pixel;  // the nearest moving sample of the 3x3, if any
   bool anyMoving = false;
   for (int dy = -1; dy <= 1; ++dy) {
     for (int dx = -1; dx <= 1; ++dx) {
@@ -207,7 +213,7 @@ void main() {
       gFarthest = max(gFarthest, depth);
       if (signedDepth < 0.0 && depth <= movingDepth) {
         movingDepth = depth;
-        startMotion = entry.motion;
+        movingAt = n;
         anyMoving = true;
       }
       if (wanted == n) {  // border texels repeat: count each sample once
@@ -256,6 +262,7 @@ void main() {
 #if CHAINS
   // Chains of the pixel's moving surface: where it is in the frame behind (t-1, t-2, ...) and
   // ahead (t+1, ...) of the one processed last.
+  vec2 startMotion = anyMoving ? motionAt(movingAt, uTargetLayer) : vec2(0.0);
   vec2 behind = gPosition + startMotion;  // in t-1
   vec2 aheadPrevious = gPosition;         // in t (the chain ahead inverts each next frame)
   vec2 velocity = -startMotion;           // first guess of each step ahead
@@ -319,7 +326,7 @@ void main() {
       for (int iteration = 0; iteration < 2; ++iteration) {
         ivec2 n = ivec2(floor(chained));
         if (!onScreen(n)) break;
-        chained = aheadPrevious - ringMotion(texelFetch(uRing, ivec3(n, layer), 0));
+        chained = aheadPrevious - motionAt(n, layer);
       }
     }
     ivec2 at = ivec2(floor(chained));
@@ -331,7 +338,7 @@ void main() {
     } else {
       addMovingBlock(k, chained);
       if (behindStep) {
-        behind = chained + ringMotion(atTexel);
+        behind = chained + motionAt(at, layer);
       } else {
         velocity = chained - aheadPrevious;
         aheadPrevious = chained;
@@ -355,7 +362,7 @@ void main() {
   }
 
   vec4 working = gSum / gWeight;
-  outColor = taaFromWorking(working);
+  outColor = finiteOutput(taaFromWorking(working));
   // Rejected: hidden candidates, and the weight of sources left out for their colour.
   float rejected = gHidden + gDisagreeing;
   outDebug = vec4(gWeight, gCandidates > 0.0 ? min(rejected / gCandidates, 1.0) : 0.0,

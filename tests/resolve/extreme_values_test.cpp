@@ -7,6 +7,7 @@
 
 #include "gl/context.h"
 #include "resolve/resolver.h"
+#include "resolve/window_resolver.h"
 
 namespace taa {
 namespace {
@@ -96,6 +97,66 @@ TEST_F(ExtremeValuesTest, ColourNearFloatMaxGivesFiniteOutputOfEitherType) {
     EXPECT_EQ(nonFiniteCount(h.pixels.data(), h.pixels.size()), 0) << bracket;
     EXPECT_EQ(h.at(5, 3)[0], 65504.0f) << bracket;
     EXPECT_EQ(h.at(9, 3)[0], -65504.0f) << bracket;
+  }
+}
+
+// The window resolve keeps colour as halves in its ring: a working value beyond half's range
+// (no bracket, or a user bracket that does not compress) became Inf there and NaN in the
+// gathered sum. Both output types come back finite, a half output clamped as above.
+TEST_F(ExtremeValuesTest, WindowResolveOfColourNearFloatMaxIsFiniteInEitherType) {
+  const float big = std::numeric_limits<float>::max();
+  const Image color = columns({0.25f, big, -big, 3e38f, 1e20f});
+  for (const char* bracket : {"taa_reinhard", "taa_log2", "none"}) {
+    ResolveOptions options;
+    options.mode = ResolveMode::Window;
+    options.window.radius = 1;
+    options.color.bracket = bracket;
+    WindowResolver resolver(*context_, options);
+    for (int frame = 1; frame <= 3; ++frame) {
+      ResolveInput input;
+      input.color = &color;
+      input.jitter = {0.25f * float(frame % 2), -0.125f};
+      resolver.addFrame(frame, input);
+    }
+    const TypedImage asFloat = resolver.resolve(2, 1, 3, SampleType::Float);
+    const Image& f = *asFloat.floats();
+    EXPECT_EQ(nonFiniteCount(f.pixels.data(), f.pixels.size()), 0) << bracket;
+    EXPECT_NEAR(f.at(1, 3)[0], 0.25f, 1e-3f) << bracket;
+    const Image h = resolver.resolve(2, 1, 3, SampleType::Half).toFloat();
+    EXPECT_EQ(nonFiniteCount(h.pixels.data(), h.pixels.size()), 0) << bracket;
+    EXPECT_EQ(h.at(5, 3)[0], 65504.0f) << bracket;
+    EXPECT_EQ(h.at(9, 3)[0], -65504.0f) << bracket;
+  }
+}
+
+// The window ring kept working-space colour as halves: with the default bracket (x / (x + 4)
+// has 2^-11 of half between 0.9995 and 1) a flat highlight of 5000 came back as 4092 and one
+// above 16380 as float's maximum. Every shipped bracket now returns them within 0.5% (the
+// ring adds 4e-6; the rest is float arithmetic near the top of x / (x + 4): 0.23% at 60000).
+TEST_F(ExtremeValuesTest, WindowResolveKeepsHighlightsToAHalfPercent) {
+  const std::vector<std::vector<float>> groups = {{0.01f, 1.0f, 100.0f, 1000.0f},
+                                                  {5000.0f, 20000.0f, 60000.0f, 65504.0f}};
+  for (const char* bracket : {"taa_reinhard", "taa_log2", "none"}) {
+    ResolveOptions options;
+    options.mode = ResolveMode::Window;
+    options.window.radius = 1;
+    options.color.bracket = bracket;
+    for (const std::vector<float>& values : groups) {
+      const Image color = columns(values);
+      WindowResolver resolver(*context_, options);
+      for (int frame = 1; frame <= 3; ++frame) {
+        ResolveInput input;
+        input.color = &color;
+        resolver.addFrame(frame, input);
+      }
+      const Image out = *resolver.resolve(2, 1, 3, SampleType::Float).floats();
+      for (std::size_t i = 0; i < values.size(); ++i) {
+        for (int x : {int(4 * i) + 1, int(4 * i) + 2}) {  // inside the column
+          EXPECT_NEAR(out.at(x, 3)[0], values[i], 5e-3f * values[i])
+              << bracket << ", value " << values[i] << ", x " << x;
+        }
+      }
+    }
   }
 }
 

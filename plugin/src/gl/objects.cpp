@@ -48,6 +48,7 @@ GLenum baseFormat(GLenum internalFormat) {
     case GL_RG8: case GL_RG16F: case GL_RG32F: return GL_RG;
     case GL_RGB8: case GL_RGB16F: case GL_RGB32F: return GL_RGB;
     case GL_RGBA8: case GL_RGBA16F: case GL_RGBA32F: return GL_RGBA;
+    case GL_R32UI: return GL_RED_INTEGER;
     case GL_RGBA32UI: return GL_RGBA_INTEGER;
   }
   throw Error("unsupported texture internal format " + hexEnum(internalFormat));
@@ -185,7 +186,8 @@ TextureArray::TextureArray(const Functions& gl, int width, int height, int layer
   gl.TexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
   gl.TexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
   gl.TexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAX_LEVEL, 0);
-  const GLenum type = format == GL_RGBA_INTEGER ? GL_UNSIGNED_INT : GL_FLOAT;
+  const GLenum type =
+      format == GL_RGBA_INTEGER || format == GL_RED_INTEGER ? GL_UNSIGNED_INT : GL_FLOAT;
   gl.TexImage3D(GL_TEXTURE_2D_ARRAY, 0, static_cast<GLint>(internalFormat), width, height, layers,
                 0, format, type, nullptr);
   checkError(gl, ("creating a " + std::to_string(width) + "x" + std::to_string(height) + "x" +

@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <optional>
 #include <string>
@@ -20,6 +21,7 @@ namespace {
 // Texture units. Every pass binds its own inputs from unit 0; the bracket's LUTs follow.
 enum TextureUnit : int {
   kRingUnit = 0,       // gather and classify: the ring
+  kRingMotionUnit,     // and its motion
   kColourStageUnit = 0,  // prepare: the staged frame
   kDepthStageUnit,
   kMotionStageUnit,
@@ -77,13 +79,13 @@ struct WindowResolver::Impl {
   gl::AnySamplesQuery movingQuery;
   color::OcioGpuResources toWorkingLuts, fromWorkingLuts;
 
-  // The ring: one layer per frame, every sample packed in one texel (window_ring.glsl): colour
-  // in the bracket's working space and motion as halves (the gather only averages colour;
-  // motion keeps 1/1024 px at 1 px, 1/64 at 64), the depth as a float, signed by
-  // window_classify.frag. One layer more than the ring holds: a frame is (re)classified from
+  // The ring: one layer per frame, each sample's colour (the bracket's working space, 16 bits
+  // of mantissa) and depth (a float, signed by window_classify.frag) packed in one texel
+  // (window_ring.glsl); its motion at the same layer of the motion ring, as halves (1/1024 px
+  // at 1 px, 1/64 at 64). One layer more than the ring holds: a frame is (re)classified from
   // its layer into the spare one, and the two swap.
   int width = 0, height = 0;
-  gl::TextureArray ring;
+  gl::TextureArray ring, ringMotion;
   std::vector<gl::Framebuffer> layerTargets;
   int spareLayer = 0;
   // A frame passes through these on its way into the ring.
@@ -145,12 +147,14 @@ struct WindowResolver::Impl {
     height = h;
     const int layers = capacity() + 1;
     ring = gl::TextureArray(gl, w, h, layers, GL_RGBA32UI);
+    ringMotion = gl::TextureArray(gl, w, h, layers, GL_R32UI);
     layerTargets.clear();
     freeLayers.clear();
     for (int layer = layers - 2; layer >= 0; --layer) freeLayers.push_back(layer);
     spareLayer = layers - 1;
     for (int layer = 0; layer < layers; ++layer) {
-      layerTargets.emplace_back(gl, std::vector<gl::Attachment>{{ring, layer}});
+      layerTargets.emplace_back(gl,
+                                std::vector<gl::Attachment>{{ring, layer}, {ringMotion, layer}});
     }
     colourStage = gl::Texture();
     depthStage = gl::Texture(gl, w, h, GL_R32F);
@@ -197,6 +201,7 @@ struct WindowResolver::Impl {
     const gl::Program& p = classifyProgram;
     p.set("uClassifyMode", int(mode));
     p.set("uRing", int(kRingUnit));
+    p.set("uRingMotion", int(kRingMotionUnit));
     p.set("uLayer", slot.layer);
     p.set("uOtherLayer", other ? other->layer : slot.layer);
     p.set("uJitter", slot.jitter.x, slot.jitter.y);
@@ -211,6 +216,7 @@ struct WindowResolver::Impl {
     layerTargets[spareLayer].bind();
     p.use();
     ring.bind(kRingUnit);
+    ringMotion.bind(kRingMotionUnit);
     triangle.draw();
     gl::checkError(gl, "window classify pass");
     std::swap(slot.layer, spareLayer);
@@ -328,6 +334,7 @@ struct WindowResolver::Impl {
   void setGatherUniforms(const gl::Program& p, int frame, int first, int last) {
     const Slot& target = slots.at(frame);
     p.set("uRing", int(kRingUnit));
+    p.set("uRingMotion", int(kRingMotionUnit));
     p.set("uTargetLayer", target.layer);
     p.set("uTargetJitter", target.jitter.x, target.jitter.y);
     const std::array<float, 9> weights =
@@ -426,10 +433,14 @@ struct WindowResolver::Impl {
     p.set("uColourTolerance", options.window.colourTolerance);
     p.set("uDepthTolerance", options.depthTolerance);
     p.set("uReconstructionWeight", options.window.reconstructionWeight);
+    // The output clamped to what its type holds (glsl/finite_range.glsl).
+    p.set("uOutputLimit", outputType == SampleType::Half ? 65504.0f
+                                                         : std::numeric_limits<float>::max());
     setGatherUniforms(p, frame, first, last);
     gatherTarget.bind();
     p.use();
     ring.bind(kRingUnit);
+    ringMotion.bind(kRingMotionUnit);
     fromWorkingLuts.bind();
     triangle.draw();
     gl::checkError(gl, "window gather pass");
