@@ -49,6 +49,7 @@ uniform float uReconstruction[9];  // t's 3x3 unjitter weights (resolve/reconstr
 uniform int uSourceCount;
 uniform int uSourceLayer[MAX_SOURCES];
 uniform int uSourceOffset[MAX_SOURCES];  // s - t
+uniform float uSourceWeight[MAX_SOURCES];  // by distance in frames (resolve/window_frame_weight)
 uniform vec2 uSourceJitter[MAX_SOURCES];
 uniform int uSourceHasCamera[MAX_SOURCES];  // s and t both have cameras
 uniform mat3 uToTargetAlong[MAX_SOURCES];
@@ -59,9 +60,6 @@ uniform mat3 uFromTargetAlong[MAX_SOURCES];
 uniform mat3 uFromTargetOffset[MAX_SOURCES];
 
 uniform float uSigma;
-uniform float uFalloff;
-uniform bool uTaper;
-uniform int uRadius;  // K
 uniform float uColourTolerance;
 uniform float uDepthTolerance;
 uniform float uReconstructionWeight;
@@ -227,18 +225,18 @@ void main() {
       depths[3 * (dy + 1) + dx + 1] = depth;
       gNearest = min(gNearest, depth);
       gFarthest = max(gFarthest, depth);
-      if (signedDepth < 0.0 && depth <= movingDepth) {
-        movingDepth = depth;
-        movingAt = n;
-        anyMoving = true;
-      }
-      if (wanted == n) {  // border texels repeat: count each sample once
-        float w = spatialWeight(vec2(n) + 0.5 + uTargetJitter - gPosition, uSigma);
-        float y = luma(colour.rgb);
-        ownWeight += w;
-        ownSum += w * colour;
-        ownLumaSquares += w * y * y;
-      }
+      // Selects, not ifs: llvmpipe runs an if's body for every pixel anyway, masked.
+      bool nearerMoving = signedDepth < 0.0 && depth <= movingDepth;
+      movingDepth = nearerMoving ? depth : movingDepth;
+      movingAt = nearerMoving ? n : movingAt;
+      anyMoving = anyMoving || nearerMoving;
+      // Border texels repeat: count each sample once.
+      float w = wanted == n ? spatialWeight(vec2(n) + 0.5 + uTargetJitter - gPosition, uSigma)
+                            : 0.0;
+      float y = luma(colour.rgb);
+      ownWeight += w;
+      ownSum += w * colour;
+      ownLumaSquares += w * y * y;
     }
   }
   addSample(ownSum, 1.0);  // weights already applied
@@ -305,7 +303,7 @@ void main() {
     int offsetFrames = uSourceOffset[k];
     int layer = gSourceLayer;
     vec2 jitter = gSourceJitter;
-    float frameWeight = temporalWeight(offsetFrames, uFalloff, uTaper, uRadius);
+    float frameWeight = uSourceWeight[k];
     gSourceWeight = 0.0;
     gSourceSum = vec4(0.0);
     gSourceLumaSquares = 0.0;

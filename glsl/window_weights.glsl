@@ -6,21 +6,8 @@ float spatialWeight(vec2 offset, float sigma) {
   return exp(-dot(offset, offset) / (2.0 * sigma * sigma));
 }
 
-// Weight by distance in frames: 1 / (1 + (frames / falloff)^2) (falloff 0: 1), times, with
-// `taper`, a Hann window over the K frames each side, cos^2(pi/2 frames / (K + 1)): frames
-// enter and leave a moving window gently, so the output does not step when they do.
-float temporalWeight(int frames, float falloff, bool taper, int radius) {
-  float weight = 1.0;
-  if (falloff > 0.0) {
-    float x = float(frames) / falloff;
-    weight = 1.0 / (1.0 + x * x);
-  }
-  if (taper) {
-    float c = cos(1.5707963 * float(frames) / float(radius + 1));
-    weight *= c * c;
-  }
-  return weight;
-}
+// The weight by distance in frames is the same for every pixel: resolve/window_frame_weight
+// computes it once per source frame.
 
 // How well one source frame's samples agree with the resolved frame's own, as a weight for all
 // of them: shading that changed over the window (a shadow that moved, a light that turned)

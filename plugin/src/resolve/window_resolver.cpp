@@ -13,6 +13,7 @@
 #include "color/ocio_gpu_resources.h"
 #include "gl/objects.h"
 #include "resolve/reconstruction_filter.h"
+#include "resolve/window_frame_weight.h"
 #include "taa/error.h"
 
 namespace taa {
@@ -344,7 +345,7 @@ struct WindowResolver::Impl {
     p.set("uTargetHasCamera", useCameras ? 1 : 0);
 
     std::vector<int> layers, offsets, hasCamera;
-    std::vector<float> jitters, toTargetAlong, toTargetOffset, toTargetDepthAlong,
+    std::vector<float> frameWeights, jitters, toTargetAlong, toTargetOffset, toTargetDepthAlong,
         toTargetDepthOffset, fromTargetAlong, fromTargetOffset;
     // Only the rows the gather uses, as 3x3 over (x, y, 1): a carry's offset is always applied
     // to (x, y, 1, 1), so its last two columns fold into one.
@@ -373,6 +374,7 @@ struct WindowResolver::Impl {
         const Slot& s = found->second;
         layers.push_back(s.layer);
         offsets.push_back(source - frame);
+        frameWeights.push_back(windowFrameWeight(source - frame, options.window));
         jitters.push_back(s.jitter.x);
         jitters.push_back(s.jitter.y);
         const bool cameras = useCameras && s.camera;
@@ -395,6 +397,7 @@ struct WindowResolver::Impl {
     if (count == 0) return;
     p.setIntArray("uSourceLayer", layers.data(), count);
     p.setIntArray("uSourceOffset", offsets.data(), count);
+    p.setArray("uSourceWeight", frameWeights.data(), count);
     p.setVec2Array("uSourceJitter", jitters.data(), count);
     p.setIntArray("uSourceHasCamera", hasCamera.data(), count);
     p.setMatrix3Array("uToTargetAlong", toTargetAlong.data(), count);
@@ -427,9 +430,6 @@ struct WindowResolver::Impl {
     for (int f = first; f <= last; ++f) chains = chains || slots.at(f).hasMoving;
     const gl::Program& p = gatherPrograms[chains ? 1 : 0];
     p.set("uSigma", options.window.sigma);
-    p.set("uFalloff", options.window.falloff);
-    p.set("uTaper", options.window.taper ? 1 : 0);
-    p.set("uRadius", options.window.radius);
     p.set("uColourTolerance", options.window.colourTolerance);
     p.set("uDepthTolerance", options.depthTolerance);
     p.set("uReconstructionWeight", options.window.reconstructionWeight);
