@@ -172,24 +172,25 @@ void addStaticBlock(ivec2 corner, bool skip, ivec2 taken, float frameWeight) {
 }
 
 // One moving sample of the current source, `step` from `corner`, carried along the chain that
-// reached `chained` (without early exits, as addStaticSample).
-void addMovingSample(ivec2 corner, ivec2 step, vec2 chained) {
+// reached `chained` (without early exits, as addStaticSample); none unless `alive`.
+void addMovingSample(ivec2 corner, ivec2 step, vec2 chained, bool alive) {
   ivec2 n = corner + step;
   RingSample entry = ringSample(clamp(n, ivec2(0), gSize - 1), gSourceLayer);
   float weight = spatialWeight(vec2(n) + 0.5 + gSourceJitter - chained, uSigma);
   // Static samples are the cameras'.
-  bool candidate = onScreen(n) && entry.depth < 0.0 && weight >= 1e-3;
+  bool candidate = alive && onScreen(n) && entry.depth < 0.0 && weight >= 1e-3;
   gCandidates += candidate ? 1.0 : 0.0;
   addSourceSample(entry.colour, candidate ? weight : 0.0);
 }
 
-// The moving samples of the current source in the 2x2 block around the chained point.
-void addMovingBlock(vec2 chained) {
+// The moving samples of the current source in the 2x2 block around the chained point, if the
+// chain is `alive` there.
+void addMovingBlock(vec2 chained, bool alive) {
   ivec2 corner = cornerTexel(chained, gSourceJitter);
-  addMovingSample(corner, ivec2(0, 0), chained);
-  addMovingSample(corner, ivec2(1, 0), chained);
-  addMovingSample(corner, ivec2(0, 1), chained);
-  addMovingSample(corner, ivec2(1, 1), chained);
+  addMovingSample(corner, ivec2(0, 0), chained, alive);
+  addMovingSample(corner, ivec2(1, 0), chained, alive);
+  addMovingSample(corner, ivec2(0, 1), chained, alive);
+  addMovingSample(corner, ivec2(1, 1), chained, alive);
 }
 
 void main() {
@@ -327,39 +328,33 @@ void main() {
     }
 
 #if CHAINS
+    // Straight-line code with selects (llvmpipe runs every branch anyway, masked): the chain of
+    // this step's direction moves on one frame while it stays on moving samples.
     bool behindStep = offsetFrames < 0;
-    bool chainAlive = behindStep ? behindAlive : aheadAlive;
-    if (chainAlive) {
-    vec2 chained;
-    if (behindStep) {
-      chained = behind;
-    } else {
-      // Invert the next frame's vectors: find q with q + motion(q) = the position one frame
-      // before, starting from the last step's velocity.
-      chained = aheadPrevious + velocity;
-      for (int iteration = 0; iteration < 2; ++iteration) {
-        ivec2 n = ivec2(floor(chained));
-        if (!onScreen(n)) break;
-        chained = aheadPrevious - motionAt(n, layer);
-      }
+    bool alive = behindStep ? behindAlive : aheadAlive;
+    // Ahead: invert the next frame's vectors, q with q + motion(q) = the position one frame
+    // before, from the last step's velocity, in two fixed-point steps while on screen.
+    vec2 chained = behindStep ? behind : aheadPrevious + velocity;
+    bool inside = !behindStep;
+    for (int iteration = 0; iteration < 2; ++iteration) {
+      ivec2 n = ivec2(floor(chained));
+      inside = inside && onScreen(n);
+      vec2 inverted = aheadPrevious - motionAt(clamp(n, ivec2(0), gSize - 1), layer);
+      chained = inside ? inverted : chained;
     }
     ivec2 at = ivec2(floor(chained));
+    ivec2 atClamped = clamp(at, ivec2(0), gSize - 1);
     // The chain ends off screen, or where the frame sees something static: the moving surface
     // is not there (hidden, or gone).
-    uvec4 atTexel = onScreen(at) ? texelFetch(uRing, ivec3(at, layer), 0) : uvec4(0u);
-    if (!onScreen(at) || ringDepth(atTexel) >= 0.0) {
-      if (behindStep) behindAlive = false; else aheadAlive = false;
-    } else {
-      addMovingBlock(chained);
-      if (behindStep) {
-        behind = chained + motionAt(at, layer);
-      } else {
-        velocity = chained - aheadPrevious;
-        aheadPrevious = chained;
-      }
-    }
-    }
-
+    bool continues = alive && onScreen(at) &&
+                     ringDepth(texelFetch(uRing, ivec3(atClamped, layer), 0)) < 0.0;
+    addMovingBlock(chained, continues);
+    vec2 atMotion = motionAt(atClamped, layer);
+    behind = behindStep && continues ? chained + atMotion : behind;
+    velocity = !behindStep && continues ? chained - aheadPrevious : velocity;
+    aheadPrevious = !behindStep && continues ? chained : aheadPrevious;
+    behindAlive = behindStep ? continues : behindAlive;
+    aheadAlive = behindStep ? aheadAlive : continues;
 #endif
 
     // The source weighed whole: how well its samples' mean agrees with t's own.
