@@ -314,16 +314,18 @@ void main() {
       // rather than an if: llvmpipe runs an if's body for a whole group of pixels whether or
       // not any of them takes it, but leaves a loop as soon as none of them goes on, so groups
       // with one surface skip the second block.
-      ivec2 first = ivec2(0);
-      float surfaceDepth = nearDepth;
+      vec3 source = carried(fromTargetAlong, fromTargetOffset, gPosition, nearDepth);
+      ivec2 first = cornerTexel(source.xy / source.z, jitter);
+      ivec2 corner = first;
       for (int surface = 0; surface < 2; ++surface) {
-        vec3 source = carried(fromTargetAlong, fromTargetOffset, gPosition, surfaceDepth);
-        ivec2 corner = cornerTexel(source.xy / source.z, jitter);
-        if (surface == 0) first = corner;
         addStaticBlock(corner, surface == 1, first, frameWeight);
         bool thin = gThinDepth < nearDepth * (1.0 - split);
-        if (!(twoSurfaces || thin)) break;
-        surfaceDepth = twoSurfaces ? farDepth : gThinDepth;
+        source = carried(fromTargetAlong, fromTargetOffset, gPosition,
+                         twoSurfaces ? farDepth : gThinDepth);
+        corner = cornerTexel(source.xy / source.z, jitter);
+        // A second block that is the first (little parallax in the nearer frames) would add
+        // nothing: its samples are all gathered already.
+        if (!(twoSurfaces || thin) || corner == first) break;
       }
     }
 
