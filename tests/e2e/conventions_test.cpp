@@ -197,21 +197,25 @@ TEST_F(ConventionsTest, OverscanKeepsItsWindowsAndResolvesTheBorder) {
   for (const char* stem : {"beauty", "depth", "motion"}) {
     writeAsOverscan(full, over, stem, kFrames, kBorder);
   }
-  auto fullArgs = separateArgs(full, "full_out");
-  auto overArgs = separateArgs(over, "over_out");
-  for (auto* args : {&fullArgs, &overArgs}) {
-    args->insert(args->end(), {"--camera-motion", "camera"});
-    runOk(*args);
+  for (const std::string mode : {"history", "window"}) {
+    auto fullArgs = separateArgs(full, mode + "_full_out");
+    auto overArgs = separateArgs(over, mode + "_over_out");
+    for (auto* args : {&fullArgs, &overArgs}) {
+      args->insert(args->end(), {"--camera-motion", "camera", "--mode", mode});
+      runOk(*args);
+    }
+    const Exr out = readExr(dir_ / frameName(mode + "_over_out", kFrames));
+    EXPECT_EQ(out.spec.x, -kBorder);
+    EXPECT_EQ(out.spec.y, -kBorder);
+    EXPECT_EQ(out.spec.width, 72);
+    EXPECT_EQ(out.spec.full_x, 0);
+    EXPECT_EQ(out.spec.full_width, 72 - 2 * kBorder);
+    EXPECT_EQ(out.spec.full_height, 48 - 2 * kBorder);
+    // Every pixel, the border included, as resolved from the full-frame render. The window
+    // resolve gathers from every frame of its window from frame 1 on (no first frame alone).
+    expectSameOutput(mode + "_full_out", mode + "_over_out", kFrames, 1e-4f,
+                     mode == "history" ? 2 : 0, 0.01);
   }
-  const Exr out = readExr(dir_ / frameName("over_out", kFrames));
-  EXPECT_EQ(out.spec.x, -kBorder);
-  EXPECT_EQ(out.spec.y, -kBorder);
-  EXPECT_EQ(out.spec.width, 72);
-  EXPECT_EQ(out.spec.full_x, 0);
-  EXPECT_EQ(out.spec.full_width, 72 - 2 * kBorder);
-  EXPECT_EQ(out.spec.full_height, 48 - 2 * kBorder);
-  // Every pixel, the border included, as resolved from the full-frame render.
-  expectSameOutput("full_out", "over_out", kFrames, 1e-4f, 2, 0.01);
 }
 
 TEST_F(ConventionsTest, SidecarCameraAndJitterMatchTheHeaders) {
@@ -247,14 +251,19 @@ TEST_F(ConventionsTest, SidecarCameraAndJitterMatchTheHeaders) {
   json << "}}";
   json.close();
 
-  auto headers = separateArgs(in, "headers");
-  headers.insert(headers.end(), {"--camera-motion", "camera"});
-  runOk(headers);
-  auto sidecar = separateArgs(in, "sidecar");
-  sidecar.insert(sidecar.end(), {"--camera-motion", "camera", "--camera-sidecar",
-                                 (dir_ / "camera.json").string(), "--jitter", "sidecar"});
-  runOk(sidecar);
-  expectSameOutput("headers", "sidecar", kFrames, 1e-4f, 2, 0.01);
+  for (const std::string mode : {"history", "window"}) {
+    auto headers = separateArgs(in, mode + "_headers");
+    headers.insert(headers.end(), {"--camera-motion", "camera", "--mode", mode});
+    runOk(headers);
+    auto sidecar = separateArgs(in, mode + "_sidecar");
+    sidecar.insert(sidecar.end(), {"--camera-motion", "camera", "--camera-sidecar",
+                                   (dir_ / "camera.json").string(), "--jitter", "sidecar",
+                                   "--mode", mode});
+    runOk(sidecar);
+    // The window resolve gathers from every frame of its window from frame 1 on.
+    expectSameOutput(mode + "_headers", mode + "_sidecar", kFrames, 1e-4f,
+                     mode == "history" ? 2 : 0, 0.01);
+  }
 }
 
 TEST_F(ConventionsTest, OutputKeepsNamesTypeMetadataAndPassThroughChannels) {

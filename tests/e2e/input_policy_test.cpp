@@ -134,17 +134,22 @@ TEST_F(InputPolicyTest, NonFiniteColourAndMotionAreReportedWithCountsOrRefusedWh
 
 TEST_F(InputPolicyTest, ASizeChangeIsReportedOrRefusedWhenStrict) {
   test::writeSeparateFrames(in_, 4, 4, 32, 20);  // frame 4 rendered at another size
-  const ToolRun lenient = run({"-v"});
+  const ToolRun lenient = run({"-v", "--mode", "history"});
   ASSERT_EQ(lenient.exitCode, 0) << lenient.err;
   EXPECT_TRUE(contains(lenient.err, "taatool WARNING: the image size changed 2 times, history "
                                     "restarted there (first: frame 4, 32x20 after 64x40, " +
                                         (in_ / "beauty.0004.exr").string() + ")"))
       << lenient.err;
   EXPECT_TRUE(contains(lenient.out, "[new size 32x20: history reset]")) << lenient.out;
-  test::expectToolError(run({"--strict"}),
+  test::expectToolError(run({"--strict", "--mode", "history"}),
                         {"the image size changes from 64x40 to 32x20, which restarts history "
                          "(--strict)",
                          (in_ / "beauty.0004.exr").string(), "frame 4"});
+  // The window resolve (the default) cannot gather across sizes: an error naming the way out.
+  test::expectToolError(run({}), {"frame is 32x20 but the frames of its window are 64x40",
+                                  "--reset-frames", (in_ / "beauty.0004.exr").string(),
+                                  "frame 4"});
+  EXPECT_EQ(run({"--reset-frames", "4,5"}).exitCode, 0);  // frame 4 alone at 32x20
 }
 
 TEST_F(InputPolicyTest, FloatColourBeyondHalfForAHalfOutputIsReported) {
@@ -177,12 +182,16 @@ TEST_F(InputPolicyTest, NonFiniteHeaderJitterIsAnError) {
                      jitter);
     });
   }
-  test::expectToolError(run({"--jitter", "header:taa:jitter", "--frames", "1-3"}),
-                        {"jitter (nan, -0.25) from the header attribute taa:jitter is not a "
-                         "finite number of pixels",
-                         (in_ / "beauty.0002.exr").string(), "frame 2"});
-  EXPECT_TRUE(written(1));
-  EXPECT_FALSE(written(2));
+  for (const std::string mode : {"history", "window"}) {
+    fs::remove_all(dir_ / "out");
+    test::expectToolError(
+        run({"--jitter", "header:taa:jitter", "--frames", "1-3", "--mode", mode}),
+        {"jitter (nan, -0.25) from the header attribute taa:jitter is not a finite number of "
+         "pixels",
+         (in_ / "beauty.0002.exr").string(), "frame 2"});
+    EXPECT_EQ(written(1), mode == "history");  // frame 1's window holds frame 2
+    EXPECT_FALSE(written(2));
+  }
 }
 
 TEST_F(InputPolicyTest, AbsurdThreadCountsAreRefused) {

@@ -146,11 +146,16 @@ TEST_F(TaatoolTest, DepthOrMotionSizeDifferentFromColor) {
   }
   fs::copy_file(small / "motion.0003.exr", in / "motion.0003.exr",
                 fs::copy_options::overwrite_existing);
-  const ToolRun r = run(separateArgs(in, dir_ / "out" / "r.####.exr"));
-  expectError(r, {"motion.0003.exr", "frame 3", "32x20", "64x40"});
+  auto history = separateArgs(in, dir_ / "out" / "r.####.exr");
+  history.insert(history.end(), {"--mode", "history"});
+  expectError(run(history), {"motion.0003.exr", "frame 3", "32x20", "64x40"});
   EXPECT_FALSE(fs::exists(dir_ / "out" / "r.0003.exr"));
   EXPECT_TRUE(fs::exists(dir_ / "out" / "r.0002.exr"));  // earlier frames are complete files
   EXPECT_TRUE(filesContaining(dir_ / "out", "tmp").empty());
+  // The window resolve (the default): every frame's window holds frame 3, so none is written.
+  expectError(run(separateArgs(in, dir_ / "window" / "r.####.exr")),
+              {"motion.0003.exr", "frame 3", "32x20", "64x40"});
+  EXPECT_TRUE(filesContaining(dir_ / "window", "r.").empty());
 }
 
 TEST_F(TaatoolTest, NonExrAndTruncatedFiles) {

@@ -49,7 +49,7 @@ class FarmRunTest : public ::testing::Test {
   }
 
   static std::vector<std::pair<std::string, std::vector<std::string>>> modes() {
-    return {{"history", {}}, {"window", {"--mode", "window", "--window", "3"}}};
+    return {{"history", {"--mode", "history"}}, {"window", {"--mode", "window", "--window", "3"}}};
   }
 
   // taatool's arguments for the shot, output into `folder`.
@@ -63,8 +63,11 @@ class FarmRunTest : public ::testing::Test {
 
   void SetUp() override { dir_ = freshTestFolder(); }
 
-  // taa-farm VERB ARGS... with the shot's taatool arguments, output into dir_/out.
-  ToolRun farm(std::vector<std::string> args, const std::vector<std::string>& mode = {}) {
+  // taa-farm VERB ARGS... with the shot's taatool arguments, output into dir_/out; history
+  // mode unless `mode` says otherwise (the pre-roll, resume and exit-status tests were written
+  // for it; the window mode's exactness has its own test).
+  ToolRun farm(std::vector<std::string> args,
+               const std::vector<std::string>& mode = {"--mode", "history"}) {
     std::vector<std::string> all = shotArgs(dir_ / "out");
     all.insert(all.end(), mode.begin(), mode.end());
     args.insert(args.end(), all.begin(), all.end());
@@ -214,6 +217,7 @@ TEST_F(FarmRunTest, ExitStatusesSayWhatWentWrong) {
     fs::create_symlink(entry.path(), in / entry.path().filename());
   }
   fs::remove(in / frameName("motion", 20));
+  const std::vector<std::string> history = {"--mode", "history"};
   auto farmOn = [&](std::vector<std::string> args, const std::vector<std::string>& extra) {
     std::vector<std::string> shot = separateFileArgs(in, dir_ / "out" / "r.####.exr");
     args.insert(args.end(), shot.begin(), shot.end());
@@ -221,7 +225,7 @@ TEST_F(FarmRunTest, ExitStatusesSayWhatWentWrong) {
     args.insert(args.end(), extra.begin(), extra.end());
     return runProgram(TAA_FARM_PATH, args, dir_);
   };
-  run = farmOn({"run", "--chunk", "19-24"}, {});
+  run = farmOn({"run", "--chunk", "19-24"}, history);
   EXPECT_EQ(run.exitCode, 3) << run.err;
   EXPECT_NE(run.err.find("taa-farm ERROR: input frame not ready (missing), needed by chunk "
                          "19-24 : " + (in / frameName("motion", 20)).string() +
@@ -233,12 +237,12 @@ TEST_F(FarmRunTest, ExitStatusesSayWhatWentWrong) {
   EXPECT_EQ(farmOn({"run", "--chunk", "17-17"}, kWindow).exitCode, 3);
   EXPECT_EQ(farmOn({"run", "--chunk", "13-16"}, kWindow).exitCode, 0);
   // History: the chunk before has its pre-roll and frames before 20.
-  EXPECT_EQ(farmOn({"run", "--chunk", "13-18"}, {}).exitCode, 0);
+  EXPECT_EQ(farmOn({"run", "--chunk", "13-18"}, history).exitCode, 0);
 
   // 1: a resolve error names the file and frame.
   fs::remove(in / frameName("beauty", 22));
   std::ofstream(in / frameName("beauty", 22)) << "not an EXR";
-  run = farmOn({"run", "--chunk", "22-22", "--preroll", "0"}, {});
+  run = farmOn({"run", "--chunk", "22-22", "--preroll", "0"}, history);
   EXPECT_EQ(run.exitCode, 1) << run.err;
   EXPECT_NE(run.err.find((in / frameName("beauty", 22)).string() + " (frame 22"),
             std::string::npos)
@@ -379,10 +383,17 @@ TEST_F(FarmRunTest, SubmitDryRunPrintsTheArrayScript) {
   for (const std::string& line : std::vector<std::string>{
            "#SBATCH --array=0-2\n", "#SBATCH --partition=comp\n", "#SBATCH --mem=2G\n",
         "#SBATCH --output=" + (dir_ / "logs").string() + "/taa-farm-%A_%a.log\n",
-        "exec " + std::string(TAA_FARM_PATH) + " run --chunk 4 --preroll 128 " +
+        "exec " + std::string(TAA_FARM_PATH) + " run --chunk 4 " +
             (in / "beauty.####.exr").string()}) {
     EXPECT_NE(run.out.find(line), std::string::npos) << line << " in\n" << run.out;
   }
+  // The history resolve's pre-roll goes with it (the window resolve reads its own windows).
+  args.insert(args.end(), {"--mode", "history"});
+  const ToolRun history = runProgram(TAA_FARM_PATH, args, dir_);
+  ASSERT_EQ(history.exitCode, 0) << history.err;
+  EXPECT_NE(history.out.find("run --chunk 4 --preroll 128 " + (in / "beauty.####.exr").string()),
+            std::string::npos)
+      << history.out;
   EXPECT_NE(run.out.find(" --frames 5-14\n"), std::string::npos) << run.out;
   EXPECT_FALSE(fs::exists(dir_ / "logs"));  // a dry run changes nothing
 }

@@ -52,6 +52,11 @@ def shot_args(folder, sample=SAMPLE):
             "--frames", "1-24", "-o", os.path.join(folder, "r.####.exr")]
 
 
+def history_args(folder, sample=SAMPLE):
+    """The shot in history mode (the pre-roll and requeue tests are about it)."""
+    return [*shot_args(folder, sample), "--mode", "history"]
+
+
 def frame_path(folder, frame):
     return os.path.join(folder, f"r.{frame:04d}.exr")
 
@@ -176,7 +181,7 @@ def test_window_mode_chunks_are_bit_identical_to_one_taatool_run(cluster, refere
 
 @pytest.fixture(scope="module")
 def history_job(cluster, reference):
-    job, out, logs = submit(cluster, "history", shot_args)
+    job, out, logs = submit(cluster, "history", history_args)
     states = wait_until_done(cluster, job)
     assert states == {t: ("COMPLETED", "0:0") for t in range(4)}, states
     return out
@@ -234,7 +239,7 @@ def kill_task_1_mid_chunk(cluster, name):
     written frame 7 and is writing a later one (a temporary of 8-12 is there), else once it has
     written 10. Returns (job, out, logs, its log so far), or None when the task finished first
     (then the job is cancelled)."""
-    job, out, logs = submit(cluster, name, shot_args)
+    job, out, logs = submit(cluster, name, history_args)
     log1 = os.path.join(logs, f"taa-farm-{job}_1.log")
     wait_for(lambda: os.path.exists(log1), 120, "task 1 to start", interval=0.01)
     pid = None
@@ -276,7 +281,7 @@ def test_a_task_killed_mid_frame_and_requeued_completes_its_chunk(cluster, histo
     wait_for(lambda: task_states(cluster, job).get(1, ("",))[0] == "FAILED", 30,
              "task 1 to be FAILED")
     # Nothing partial at a final path: every frame there reads whole.
-    status = subprocess.run([FARM, "status", *shot_args(out)], capture_output=True, text=True)
+    status = subprocess.run([FARM, "status", *history_args(out)], capture_output=True, text=True)
     assert "incomplete" not in status.stdout, status.stdout
 
     subprocess.run(["scontrol", "requeue", f"{job}_1"], check=True, env=cluster.env)
@@ -311,7 +316,7 @@ def test_a_task_missing_an_input_fails_alone(cluster, work):
     for name in os.listdir(SAMPLE):
         os.symlink(os.path.join(SAMPLE, name), os.path.join(sample, name))
     os.remove(os.path.join(sample, "motion.0022.exr"))
-    job, out, logs = submit(cluster, "missing", lambda out: shot_args(out, sample))
+    job, out, logs = submit(cluster, "missing", lambda out: history_args(out, sample))
     states = wait_until_done(cluster, job)
     assert states[3] == ("FAILED", "3:0"), states
     assert all(states[t] == ("COMPLETED", "0:0") for t in range(3)), states

@@ -122,7 +122,8 @@ TEST_F(OfxHostTest, FramesOutsideTheClipHoldItsEnds) {
 // exactly in any order (2).
 TEST_F(OfxHostTest, SequentialRenderFollowsHistoryFrames) {
   auto effect = instance();
-  EXPECT_EQ(descriptor_.props.getInt(kOfxImageEffectInstancePropSequentialRender), 1);
+  // The descriptor follows the default mode, the window resolve: any order.
+  EXPECT_EQ(descriptor_.props.getInt(kOfxImageEffectInstancePropSequentialRender), 0);
   EXPECT_EQ(effect->props.getInt(kOfxImageEffectInstancePropSequentialRender), 1);
   effect->params.at("historyFrames").intValue = 3;
   EXPECT_EQ(host_.parameterChanged(*effect, "historyFrames"), kOfxStatOK);

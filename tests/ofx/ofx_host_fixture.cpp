@@ -106,7 +106,9 @@ Image OfxHostTest::expected(int frame, const std::string& folder) {
 
 Image OfxHostTest::expectedWith(int frame, const std::string& folder,
                                 const std::string& arguments) {
-  runTaatoolOnce(dir_, folder, arguments);
+  // History mode, as the fixture's instances, unless the arguments choose.
+  const bool modeGiven = arguments.find("--mode") != std::string::npos;
+  runTaatoolOnce(dir_, folder, modeGiven ? arguments : "--mode history " + arguments);
   return readChannels((dir_ / folder / ("out." + frameName(frame) + ".exr")).string(),
                       {"R", "G", "B", "A"});
 }
@@ -128,6 +130,8 @@ std::unique_ptr<HostEffect> OfxHostTest::instanceWithoutPreferences(bool half,
   auto effect = host_.makeInstance(contextDescriptor_, kOfxImageEffectContextGeneral, inputs,
                                    kBounds, kFirst, lastFrame);
   EXPECT_EQ(host_.action(kOfxActionCreateInstance, effect.get()), kOfxStatOK);
+  effect->params.at("mode").intValue = 0;  // history (the default is window)
+  EXPECT_EQ(host_.parameterChanged(*effect, "mode"), kOfxStatOK);
   return effect;
 }
 

@@ -36,16 +36,19 @@ class OfxHostTest : public ::testing::Test {
   static void SetUpTestSuite();
   static void TearDownTestSuite();
 
-  // taatool's output for `frame` with the extra arguments `folder` stands for (made on first
-  // use, with $OCIO unset): "taatool" (defaults), "taatool68" (--frames 6-8),
+  // taatool's output for `frame` in history mode with the extra arguments `folder` stands for
+  // (made on first use, with $OCIO unset): "taatool" (no others), "taatool68" (--frames 6-8),
   // "taatool-half-scale" (--jitter-scale 0.5 --motion-scale 0.5).
   static Image expected(int frame, const std::string& folder = "taatool");
-  // taatool's output with `arguments` added, into `folder` (made on first use).
+  // taatool's output with `arguments` added (and --mode history unless they say --mode), into
+  // `folder` (made on first use).
   static Image expectedWith(int frame, const std::string& folder, const std::string& arguments);
 
 
-  // Loads the bundle, describes it in the general context, creates an instance and runs the
-  // clip preferences action as a host does before rendering.
+  // Loads the bundle, describes it in the general context, creates an instance, sets it to
+  // history mode (the tests here were written for its temporal plan; OfxHostWindowTest sets
+  // window mode, ParametersHaveTheLibrarysDefaults checks the default) and runs the clip
+  // preferences action as a host does before rendering.
   std::unique_ptr<HostEffect> instance(bool half = false, double lastFrame = kLast);
   // The same, without the clip preferences action (the caller runs it).
   std::unique_ptr<HostEffect> instanceWithoutPreferences(bool half = false,

@@ -69,8 +69,8 @@ TEST_F(OfxHostWindowTest, ParametersHaveTheLibrarysDefaults) {
 // History needs every frame before t (1), window mode none (0); the descriptor declares the
 // default mode's value.
 TEST_F(OfxHostWindowTest, SequentialRenderFollowsTheMode) {
-  auto effect = instance();
-  EXPECT_EQ(descriptor_.props.getInt(kOfxImageEffectInstancePropSequentialRender), 1);
+  auto effect = instance();  // history mode (the fixture's)
+  EXPECT_EQ(descriptor_.props.getInt(kOfxImageEffectInstancePropSequentialRender), 0);
   EXPECT_EQ(effect->props.getInt(kOfxImageEffectInstancePropSequentialRender), 1);
   setWindowMode(*effect);
   EXPECT_EQ(effect->props.getInt(kOfxImageEffectInstancePropSequentialRender), 0);

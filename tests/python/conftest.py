@@ -37,13 +37,23 @@ def tmp_root():
     return root
 
 
-@pytest.fixture(scope="session")
-def taatool_output(tmp_root):
-    """Folder of taatool's float output on the whole bundled sample."""
+def run_taatool_on_sample(tmp_root, name, extra):
     if not os.path.exists(os.path.join(SAMPLE_DIR, "beauty.0001.exr")):
         pytest.fail(f"bundled sample missing in {SAMPLE_DIR!r} (build target taa_sample)")
-    out = os.path.join(tmp_root, "taatool")
+    out = os.path.join(tmp_root, name)
     os.makedirs(out, exist_ok=True)
-    subprocess.run([TAATOOL, *sample_args(os.path.join(out, "resolved.####.exr")), "-q"],
+    subprocess.run([TAATOOL, *sample_args(os.path.join(out, "resolved.####.exr")), "-q", *extra],
                    check=True)
     return out
+
+
+@pytest.fixture(scope="session")
+def taatool_output(tmp_root):
+    """Folder of taatool's float output on the whole bundled sample, at its defaults."""
+    return run_taatool_on_sample(tmp_root, "taatool", [])
+
+
+@pytest.fixture(scope="session")
+def taatool_history_output(tmp_root):
+    """The same in history mode: what a Node (history unless told) gives frame by frame."""
+    return run_taatool_on_sample(tmp_root, "taatool-history", ["--mode", "history"])

@@ -35,19 +35,19 @@ def test_resolve_sequence_is_identical_to_taatool(taatool_output, tmp_root):
         np.testing.assert_array_equal(ours, taatool_frame(taatool_output, frame))
 
 
-def test_options_reach_the_resolve(taatool_output, tmp_root):
+def test_options_reach_the_resolve(taatool_history_output, tmp_root):
     def resolve(name, frames):
         out = os.path.join(tmp_root, name)
         taa.resolve_sequence(os.path.join(SAMPLE_DIR, "beauty.####.exr"),
                              output=os.path.join(out, "resolved.####.exr"), frames=frames,
-                             blend=1.0, pixel_type="float")
+                             mode="history", blend=1.0, pixel_type="float")
         return read_exr(os.path.join(out, "resolved.0003.exr"), ["R", "G", "B", "A"])
 
     # blend 1 keeps no history: frame 3 after frames 1-2 is frame 3 resolved alone (up to the
     # rounding of the shader's mix()).
     with_history = resolve("blend_1_3", [1, 2, 3])
     np.testing.assert_allclose(with_history, resolve("blend_3", "3"), atol=1e-6, rtol=1e-6)
-    assert np.abs(with_history - taatool_frame(taatool_output, 3)).max() > 1e-3
+    assert np.abs(with_history - taatool_frame(taatool_history_output, 3)).max() > 1e-3
 
 
 def load_frame(frame):
@@ -56,21 +56,22 @@ def load_frame(frame):
             read_exr(sample_path("motion", frame), ["X", "Y"]))
 
 
-def test_node_matches_taatool_frame_by_frame(taatool_output):
+def test_node_matches_taatool_frame_by_frame(taatool_history_output):
     node = taa.Node()
     flipped = taa.Node()
     for frame in FRAMES:
         color, depth, motion = load_frame(frame)
         out = node.push(color, depth=depth, motion=motion, frame=frame)
         assert out.shape == color.shape and out.dtype == np.float32
-        np.testing.assert_allclose(out, taatool_frame(taatool_output, frame), atol=1e-6, rtol=0)
+        np.testing.assert_allclose(out, taatool_frame(taatool_history_output, frame), atol=1e-6,
+                                   rtol=0)
         # The same frame given bottom row first (as OpenFX and GL lay images out).
         up = flipped.push(color[::-1], depth=depth[::-1], motion=motion[::-1], frame=frame,
                           y_up=True)
         np.testing.assert_array_equal(up[::-1], out)
 
 
-def test_node_takes_float16(taatool_output):
+def test_node_takes_float16(taatool_history_output):
     """Half arrays decode exactly: the same as float32 arrays holding the half-rounded values."""
     half_node, float_node = taa.Node(), taa.Node()
     for frame in FRAMES[:6]:
@@ -79,7 +80,7 @@ def test_node_takes_float16(taatool_output):
         from_float = float_node.push(*[h.astype(np.float32) for h in halves], frame=frame)
         np.testing.assert_array_equal(from_half, from_float)
     # And stays close to the full-precision result.
-    error = np.abs(from_half - taatool_frame(taatool_output, FRAMES[5]))
+    error = np.abs(from_half - taatool_frame(taatool_history_output, FRAMES[5]))
     assert error.mean() < 2e-3
 
 

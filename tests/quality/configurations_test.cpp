@@ -43,7 +43,7 @@ TEST(YardstickConfigurations, ClassicIsTheFixedBaseline) {
             "--box-space rgb --neighbourhood 9 --motion-dilation centre --camera-motion vectors "
             "--depth-tolerance 0 --blend 0.1 --sample-count off --velocity-blend 0 "
             "--anti-flicker 0 --luma-weighting off --thin-hold 0 --cut-detection 0 --sharpen 0 "
-            "--bracket none");
+            "--bracket none --mode history");
   EXPECT_EQ(configs[1].name, "default");
   EXPECT_TRUE(configs[1].flags.empty());
 }

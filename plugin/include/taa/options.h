@@ -92,9 +92,11 @@ enum class Neighbourhood { Plus5, Box9 };
 // The resolve's stages (DESIGN.md section 4), in pipeline order. Defaults are chosen from the
 // quality yardstick (docs/QUALITY.md), not by eye.
 struct ResolveOptions {
-  // How frames are combined: the recursive history resolve, or the window resolve. The stages
-  // below marked (history) apply to the history resolve only; `window` to the window resolve.
-  ResolveMode mode = ResolveMode::History;
+  // How frames are combined: the window resolve (the default: +3 dB over the history resolve
+  // on the real renders, docs/QUALITY.md), or the recursive history resolve (2.5x faster). The
+  // stages below marked (history) apply to the history resolve only; `window` to the window
+  // resolve. The C ABI's node starts in history mode (capi/node_parameters.h).
+  ResolveMode mode = ResolveMode::Window;
   WindowOptions window;
 
   // --- unjitter

@@ -12,8 +12,16 @@
 
 namespace taa::capi {
 
+inline ResolveOptions historyResolveOptions() {
+  ResolveOptions options;
+  options.mode = ResolveMode::History;
+  return options;
+}
+
 struct NodeParameters {
-  ResolveOptions resolve;
+  // History mode, unlike taatool: a node's contract is push a frame, read its result (window
+  // mode needs taa_node_resolve_frame once the frame's window is pushed; "mode" chooses).
+  ResolveOptions resolve = historyResolveOptions();
   io::MotionConvention motion;
   io::DepthConvention depth;
   bool resetOnGap = true;  // restart history when frame != previous frame + 1 (as taatool)

@@ -48,6 +48,7 @@ int run(const std::vector<std::string>& args) {
   cli::InputReport inputReport(cl);
   JobCallbacks callbacks;
   callbacks.log = log;
+  if (verbose) callbacks.detail = log;
   callbacks.frameRead = [&inputReport](const FrameReport& report) {
     inputReport.frameRead(report);
   };

@@ -53,8 +53,8 @@ OfxStatus describe(OfxImageEffectHandle descriptor) {
   // Depth and motion are in pixels of the colour's grid: the host conforms every clip to one
   // pixel aspect ratio.
   s.properties->propSetInt(props, kOfxImageEffectPropSupportsMultipleClipPARs, 0, 0);
-  // The default parameters resolve from the clip's first frame: a host must render in order
-  // (each instance updates this for its own settings, temporal_plan.h).
+  // The default parameters (window mode) render in any order; each instance updates this for
+  // its own settings (temporal_plan.h: history from the clip's start needs the frames in order).
   s.properties->propSetInt(props, kOfxImageEffectInstancePropSequentialRender, 0,
                            sequentialRender(PluginSettings{}));
   s.properties->propSetInt(props, kOfxImageEffectPluginPropHostFrameThreading, 0, 0);

@@ -393,8 +393,8 @@ void runWindow(JobRun& run, gl::Context& context) {
     while (!reads.done() && reads.peek() <= window.last) {
       io::FrameData data = reads.next();
       const int f = data.frame;
-      if (!data.camera && !toldVectorsOnly && run.callbacks.log) {
-        run.callbacks.log("window resolve: frame " + std::to_string(f) +
+      if (!data.camera && !toldVectorsOnly && run.callbacks.detail) {
+        run.callbacks.detail("window resolve: frame " + std::to_string(f) +
                           " has no camera matrices (header or sidecar): its samples follow "
                           "their motion vectors only");
         toldVectorsOnly = true;

@@ -77,6 +77,7 @@ struct FrameReport {
 
 struct JobCallbacks {
   gl::LogSink log;                                      // informational messages
+  gl::LogSink detail;  // what only a verbose run says (the window resolve following vectors)
   // After a frame is read, before it is resolved, with what its input changed silently
   // (non-finite values, clamped values, a new size). Throwing stops the job there: nothing of
   // that frame is written (taatool --strict).
