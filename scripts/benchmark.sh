@@ -2,16 +2,19 @@
 # Performance benchmark (docs/PERFORMANCE.md). Not a test: it measures, it asserts nothing.
 #   1. a 24-frame sequence (moving_object, 1920x1080 by default) as half beauty/motion and float
 #      depth, in ZIP, PIZ and uncompressed variants;
-#   2. taatool (default resolve and bracket, half ZIP/PIZ/none output as the input) on each,
+#   2. taatool (history mode, default bracket, half ZIP/PIZ/none output as the input) on each,
 #      and oiiotool doing only the I/O of the same job in one process: read the three AOVs,
 #      write RGBA. Both get the same --compression name; a bare "zip" is level 1 in taatool
 #      (io/exr_writer.h) and OpenEXR's level 4 in oiiotool;
-#   3. peak RSS of taatool at 4K for 24 and 96 frames (the 96 reuse 8 rendered frames by links);
+#   3. peak RSS of taatool at 4K for 24 and 96 frames, each mode (the 96 reuse 8 rendered frames
+#      by links);
 #   4. "blender": a real render, the yardstick's fence scene rendered by Blender Cycles at
 #      1920x1080, 24 frames, one multilayer ZIP file a frame as Cycles writes it (half colour,
 #      float depth, float 4-channel vectors), cached in $TAA_BENCH_CACHE (default
 #      ~/.cache/taa/bench; about 6 minutes to render once): taatool's history and window modes
-#      at their defaults against oiiotool reading the same files and writing RGBA.
+#      at their defaults against oiiotool reading the same files and writing RGBA;
+#   5. "ksweep": the window mode on the same render for K = 1, 2, 4, 8, 12 (docs/QUALITY.md,
+#      "Window K sweep"), not run by default.
 # Uses Debian's /usr/bin/time, oiiotool (openimageio-tools) and blender. Environment: SIZE,
 # FRAMES, COMPRESSIONS (default "zip piz none"), PARTS ("speed memory blender" by default; any).
 set -euo pipefail
@@ -60,7 +63,7 @@ if [[ " $parts " == *" speed "* ]]; then
     mkdir -p "$work/io"  # oiiotool does not create output folders
     read -r taa_s taa_kib taa_cpu < <(measure "$taatool" -q "$in/beauty.####.exr" --depth "$in/depth.####.exr" \
       --motion "$in/motion.####.exr" --frames "1-$frames" --compression "$compression" \
-      -o "$work/out/r.####.exr")
+      --mode history -o "$work/out/r.####.exr")
     read -r io_s io_kib io_cpu < <(measure oiiotool --frames "1-$frames" "$in/beauty.#.exr" \
       "$in/depth.#.exr" "$in/motion.#.exr" --chappend --chappend --ch R,G,B,A -d half \
       --compression "$compression" -o "$work/io/o.#.exr")
@@ -86,19 +89,26 @@ if [[ " $parts " == *" memory "* ]]; then
         ln -s "$uhd/$aov.$(printf %04d $(( (f - 1) % 8 + 1 ))).exr" "$linked/$aov.$(printf %04d "$f").exr"
       done
     done
-    read -r s kib cpu < <(measure "$taatool" -q "$linked/beauty.####.exr" --depth "$linked/depth.####.exr" \
-      --motion "$linked/motion.####.exr" --frames "1-$count" -o "$work/out/r.####.exr")
-    echo "4K, $count frames: $s s ($cpu s CPU), peak RSS $((kib / 1024)) MiB"
+    for mode in history window; do
+      rm -rf "$work/out"
+      read -r s kib cpu < <(measure "$taatool" -q "$linked/beauty.####.exr" \
+        --depth "$linked/depth.####.exr" --motion "$linked/motion.####.exr" --frames "1-$count" \
+        --mode "$mode" -o "$work/out/r.####.exr")
+      echo "4K, $count frames, $mode: $s s ($cpu s CPU), peak RSS $((kib / 1024)) MiB"
+    done
   done
 fi
 
-if [[ " $parts " == *" blender "* ]]; then
-  render="${TAA_BENCH_CACHE:-$HOME/.cache/taa/bench}/cycles_fence-1920x1080-1-24"
+render="${TAA_BENCH_CACHE:-$HOME/.cache/taa/bench}/cycles_fence-1920x1080-1-24"
+if [[ " $parts " == *" blender "* || " $parts " == *" ksweep "* ]]; then
   if [ ! -f "$render/input.0024.exr" ] || [ ! -f "$render/camera.json" ]; then
     blender -b --factory-startup -P "$root/samples/blender/render_scene.py" -- \
       --scene cycles_fence --out "$render" --size 1920x1080 --frames 1-24 \
       --products camera,input --input-depth float >/dev/null
   fi
+fi
+
+if [[ " $parts " == *" blender "* ]]; then
   echo "Blender Cycles render (cycles_fence), 1920x1080, 24 frames, multilayer ZIP"
   printf "%-22s %8s %6s %9s %10s %16s\n" run "wall s" fps "CPU s" "peak MiB" "/ oiiotool wall"
   rm -rf "$work/io" && mkdir -p "$work/io"
@@ -132,6 +142,18 @@ if [[ " $parts " == *" blender "* ]]; then
       echo "taatool --mode $mode, $count frames (vectors only): $s s, peak RSS $((kib / 1024)) MiB"
     done
     rm -rf "$linked"
+  done
+fi
+if [[ " $parts " == *" ksweep "* ]]; then
+  echo "Blender Cycles render (cycles_fence), 1920x1080, 24 frames: the window mode's K"
+  printf "%-4s %8s %6s %13s %10s\n" K "wall s" fps "CPU s/frame" "peak MiB"
+  for k in 1 2 4 8 12; do
+    rm -rf "$work/out"
+    read -r s kib cpu < <(measure "$taatool" -q "$render/input.####.exr" --preset cycles \
+      --camera-sidecar "$render/camera.json" --frames 1-24 --mode window --window "$k" \
+      --compression zip -o "$work/out/r.####.exr")
+    awk -v k="$k" -v s="$s" -v c="$cpu" -v m="$((kib / 1024))" \
+      'BEGIN { printf "%-4s %8.2f %6.2f %13.2f %10d\n", k, s, 24 / s, c / 24, m }'
   done
 fi
 rm -rf "$work/out" "$work/io"
