@@ -118,7 +118,7 @@ TEST_P(TextureTest, HalfUploadIntoRgba16fSamplesExactly) {
   const int width = 128, height = 128;
   const std::vector<Imath::half> halves = allFiniteHalves();
   HalfImage image(width, height, 4);
-  image.pixels = halves;
+  image.pixels.assign(halves.begin(), halves.end());
   const Image widened = TypedImage(image).toFloat();
   Texture texture(gl(), width, height, GL_RGBA16F);
   texture.upload(halves.data(), 4, GL_HALF_FLOAT);

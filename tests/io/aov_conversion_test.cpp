@@ -15,7 +15,7 @@ constexpr float kInf = std::numeric_limits<float>::infinity();
 
 Image oneChannel(std::vector<float> values) {
   Image image(int(values.size()), 1, 1);
-  image.pixels = std::move(values);
+  image.pixels.assign(values.begin(), values.end());
   return image;
 }
 

@@ -237,7 +237,7 @@ TEST_F(ResolverTest, DebugOutputDoesNotChangeTheResult) {
     const Image expected = resolveFrame(plain, frame);
     EXPECT_EQ(resolveFrame(debugged, frame).pixels, expected.pixels);
     if (f != 3) {
-      const std::vector<float>& debug = debugged.lastDebug().pixels;
+      const FrameVector<float>& debug = debugged.lastDebug().pixels;
       ASSERT_EQ(debug.size(), expected.pixels.size());
       int kept = 0;
       for (std::size_t i = 1; i < debug.size(); i += 4) kept += debug[i] == 0.0f ? 1 : 0;

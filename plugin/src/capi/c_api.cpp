@@ -11,6 +11,7 @@
 #include "taa/error.h"
 #include "taa/taa.h"
 #include "taa/version.h"
+#include "util/frame_buffer_pool.h"
 
 struct taa_node {
   std::mutex busy;
@@ -123,6 +124,7 @@ void taa_node_destroy(taa_node* node) {
     // Waits for a call still running on another thread rather than pulling its context away.
     { std::lock_guard<std::mutex> wait(node->busy); }
     delete node;
+    taa::releaseFrameBuffers();  // the host gets the frame buffers taa kept back
   } catch (...) {
     // Destruction reports nothing: a GL failure while freeing leaves nothing to recover.
   }

@@ -7,6 +7,7 @@
 #include <cstring>
 
 #include "taa/error.h"
+#include "util/frame_buffer_pool.h"
 
 namespace taa::io {
 namespace {
@@ -97,7 +98,7 @@ void readPartChannels(OIIO::ImageInput& input, const std::string& path, int fram
 
   const std::size_t width = std::size_t(spec.width);
   const int bandRows = rowsPerBand(spec);
-  std::vector<unsigned char> band;
+  FrameVector<unsigned char> band;  // a frame-sized buffer: kept for the next frame
   for (const Pass& pass : passes) {
     int begin = spec.nchannels, end = 0;
     for (const ChannelRequest* request : pass.requests) {

@@ -97,7 +97,7 @@ void validateOptions(const ResolveOptions& o) {
 }
 
 // Fraction of pixels whose debug reason says history was rejected (off-screen, disoccluded).
-double rejectedFraction(const std::vector<float>& debug) {
+double rejectedFraction(const FrameVector<float>& debug) {
   std::size_t rejected = 0, count = debug.size() / 4;
   for (std::size_t i = 0; i < count; ++i) {
     if (debug[4 * i + 1] >= float(Rejection::OffScreen)) ++rejected;
@@ -337,7 +337,7 @@ struct Resolver::Impl {
     bool debugRead = false;
     if (options.cutDetection > 0.0f && hasHistory) {
       lastDebug = Image(width, height, 4);
-      lastDebug.pixels = resolveTarget[target].readRGBA(kDebugAttachment);
+      resolveTarget[target].readRGBA(lastDebug.pixels.data(), GL_FLOAT, kDebugAttachment);
       debugRead = true;
       if (rejectedFraction(lastDebug.pixels) > options.cutDetection) {
         hasHistory = false;  // a cut: resolve this frame again from scratch
@@ -348,7 +348,7 @@ struct Resolver::Impl {
     }
     if (debugOutput && !debugRead) {
       lastDebug = Image(width, height, 4);
-      lastDebug.pixels = resolveTarget[target].readRGBA(kDebugAttachment);
+      resolveTarget[target].readRGBA(lastDebug.pixels.data(), GL_FLOAT, kDebugAttachment);
     }
     if (!fusedOutput(options)) outputPass(target);
 

@@ -18,6 +18,7 @@
 #include "resolve/window_plan.h"
 #include "resolve/window_resolver.h"
 #include "taa/error.h"
+#include "util/frame_buffer_pool.h"
 #include "util/interruption.h"
 
 namespace taa {
@@ -432,6 +433,11 @@ void runWindow(JobRun& run, gl::Context& context) {
 }  // namespace
 
 void runSequenceJob(const SequenceJob& job, const JobCallbacks& callbacks) {
+  // Declared first, destroyed last: the job's frame buffers go back to the system (or to the
+  // host taa runs in) once every queue holding them is gone, however the job ends.
+  struct FrameBuffersReleased {
+    ~FrameBuffersReleased() { releaseFrameBuffers(); }
+  } released;
   validateSequenceJob(job);
   const io::StaleTemporaries stale = io::removeStaleTemporaries(job.outputPattern);
   if (callbacks.log) {

@@ -12,6 +12,8 @@
 #include <variant>
 #include <vector>
 
+#include "util/frame_buffer_pool.h"
+
 namespace taa {
 
 // The types an image's samples can have. Half is IEEE binary16 (Imath::half, OIIO's TypeHalf).
@@ -22,7 +24,7 @@ struct ImageOf {
   int width = 0;
   int height = 0;
   int channels = 0;
-  std::vector<T> pixels;  // width * height * channels, rows top first
+  FrameVector<T> pixels;  // width * height * channels, rows top first
 
   ImageOf() = default;
   ImageOf(int w, int h, int c) : width(w), height(h), channels(c), pixels(std::size_t(w) * h * c) {}

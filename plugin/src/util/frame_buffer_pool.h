@@ -1,0 +1,44 @@
+// Frame-sized buffers kept for the next frame (docs/PERFORMANCE.md, "Page faults").
+// A sequence allocates and frees the same few buffers of tens of MB for every frame (a frame's
+// AOVs as read, the resolved frame as read back). Served fresh each time, every 4 KiB page of
+// them faults on first touch: about 30,000 faults a 1080p frame, which cost more than a third
+// of the history mode's wall time on a virtual machine where faults are slow. The pool keeps
+// a few freed buffers and hands them back to a request of the same size, so a long run
+// touches its pages once; it stays bounded, so memory stays flat.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+namespace taa {
+
+// Buffers below this come from the ordinary heap: the pool is for frames, not for everything.
+inline constexpr std::size_t kPooledBufferBytes = std::size_t(1) << 20;
+
+void* takeFrameBuffer(std::size_t bytes);
+void giveBackFrameBuffer(void* buffer, std::size_t bytes);
+
+// Frees what the pool keeps (the end of a job, a node's destruction): a host gets its memory
+// back once taa is done.
+void releaseFrameBuffers();
+
+// The pool as a standard allocator, for the vectors that hold frames (util/image.h).
+template <typename T>
+struct FrameBufferAllocator {
+  using value_type = T;
+  FrameBufferAllocator() = default;
+  template <typename U>
+  FrameBufferAllocator(const FrameBufferAllocator<U>&) {}
+  T* allocate(std::size_t n) { return static_cast<T*>(takeFrameBuffer(n * sizeof(T))); }
+  void deallocate(T* p, std::size_t n) { giveBackFrameBuffer(p, n * sizeof(T)); }
+  template <typename U>
+  bool operator==(const FrameBufferAllocator<U>&) const { return true; }
+  template <typename U>
+  bool operator!=(const FrameBufferAllocator<U>&) const { return false; }
+};
+
+// A frame's samples, or any buffer of a frame's size: kept for the next frame when freed.
+template <typename T>
+using FrameVector = std::vector<T, FrameBufferAllocator<T>>;
+
+}  // namespace taa
