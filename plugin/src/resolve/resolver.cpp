@@ -297,6 +297,12 @@ struct Resolver::Impl {
     gl::checkError(gl, "resolve pass");
   }
 
+  // The resolve's debug attachment (reasons, weights) into lastDebug.
+  void readDebug(int target) {
+    lastDebug = Image(width, height, 4);
+    resolveTarget[target].readRGBA(lastDebug.pixels.data(), GL_FLOAT, kDebugAttachment);
+  }
+
   void outputPass(int resolved) {
     outputTarget.bind();
     outputProgram.use();
@@ -336,8 +342,7 @@ struct Resolver::Impl {
     lastFrameWasCut = false;
     bool debugRead = false;
     if (options.cutDetection > 0.0f && hasHistory) {
-      lastDebug = Image(width, height, 4);
-      resolveTarget[target].readRGBA(lastDebug.pixels.data(), GL_FLOAT, kDebugAttachment);
+      readDebug(target);
       debugRead = true;
       if (rejectedFraction(lastDebug.pixels) > options.cutDetection) {
         hasHistory = false;  // a cut: resolve this frame again from scratch
@@ -346,10 +351,7 @@ struct Resolver::Impl {
         debugRead = false;
       }
     }
-    if (debugOutput && !debugRead) {
-      lastDebug = Image(width, height, 4);
-      resolveTarget[target].readRGBA(lastDebug.pixels.data(), GL_FLOAT, kDebugAttachment);
-    }
+    if (debugOutput && !debugRead) readDebug(target);
     if (!fusedOutput(options)) outputPass(target);
 
     latest = target;

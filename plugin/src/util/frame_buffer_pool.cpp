@@ -8,6 +8,9 @@
 namespace taa {
 namespace {
 
+// Buffers below this come from the ordinary heap: the pool is for frames, not for everything.
+constexpr std::size_t kPooledBufferBytes = std::size_t(1) << 20;
+
 // Enough for the buffers of the frames a pipelined run has in flight at 1080p (about 90 MB
 // a frame in 4 buffers, 3 frames) and at 4K in part; the oldest go first.
 constexpr std::size_t kMaxKeptBuffers = 16;
@@ -60,6 +63,11 @@ class Pool {
     for (const KeptBuffer& k : all) ::operator delete(k.buffer);
   }
 
+  std::size_t keptBytes() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return keptBytes_;
+  }
+
   ~Pool() { release(); }
 
  private:
@@ -89,5 +97,7 @@ void giveBackFrameBuffer(void* buffer, std::size_t bytes) {
 }
 
 void releaseFrameBuffers() { pool().release(); }
+
+std::size_t keptFrameBufferBytes() { return pool().keptBytes(); }
 
 }  // namespace taa

@@ -12,15 +12,15 @@
 
 namespace taa {
 
-// Buffers below this come from the ordinary heap: the pool is for frames, not for everything.
-inline constexpr std::size_t kPooledBufferBytes = std::size_t(1) << 20;
-
 void* takeFrameBuffer(std::size_t bytes);
 void giveBackFrameBuffer(void* buffer, std::size_t bytes);
 
 // Frees what the pool keeps (the end of a job, a node's destruction): a host gets its memory
 // back once taa is done.
 void releaseFrameBuffers();
+
+// Bytes the pool keeps now (freed, not yet handed out again).
+std::size_t keptFrameBufferBytes();
 
 // The pool as a standard allocator, for the vectors that hold frames (util/image.h).
 template <typename T>
