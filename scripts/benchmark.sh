@@ -11,8 +11,9 @@
 #   4. "blender": a real render, the yardstick's fence scene rendered by Blender Cycles at
 #      1920x1080, 24 frames, one multilayer ZIP file a frame as Cycles writes it (half colour,
 #      float depth, float 4-channel vectors), cached in $TAA_BENCH_CACHE (default
-#      ~/.cache/taa/bench; about 6 minutes to render once): taatool's history and window modes
-#      at their defaults against oiiotool reading the same files and writing RGBA;
+#      ~/.cache/taa/bench; about a minute to render once, 50 s on 2026-11-26): taatool's
+#      history and window modes at their defaults against oiiotool reading the same files and
+#      writing RGBA;
 #   5. "ksweep": the window mode on the same render for K = 1, 2, 4, 8, 12 (docs/QUALITY.md,
 #      "Window K sweep"), not run by default.
 # Uses Debian's /usr/bin/time, oiiotool (openimageio-tools) and blender. Environment: SIZE,
