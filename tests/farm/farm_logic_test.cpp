@@ -2,10 +2,15 @@
 // handed to schedulers.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <random>
+
 #include "farm/chunk_plan.h"
 #include "farm/farm_arguments.h"
 #include "farm/farm_errors.h"
+#include "farm/sbatch_directives.h"
 #include "farm/task_commands.h"
+#include "sbatch_script_model.h"
 
 namespace taa::farm {
 namespace {
@@ -114,9 +119,12 @@ TEST(FarmArguments, MistakesAreUsageErrors) {
             std::string::npos);
   EXPECT_NE(usageErrorOf({"submit", "--chunk", "5", "--scheduler", "tractor"}).find("tractor"),
             std::string::npos);
-  EXPECT_NE(usageErrorOf({"submit", "--chunk", "5", "--mem", "4G\n#SBATCH --x"})
-                .find("line break"),
-            std::string::npos);
+  // taa-farm's own options also take "--name=value"; taatool's pass through as they are.
+  const FarmArguments attached =
+      parseFarmArguments({"submit", "--chunk=6", "--sbatch-arg=--qos=high", "--blend=0.1"});
+  EXPECT_EQ(attached.chunkSize, 6);
+  EXPECT_EQ(attached.slurm.extra, (std::vector<std::string>{"--qos=high"}));
+  EXPECT_EQ(attached.taatoolArgs, (std::vector<std::string>{"--blend=0.1"}));
 }
 
 TEST(TaskCommands, ShellQuoting) {
@@ -146,19 +154,120 @@ TEST(TaskCommands, SlurmArrayScript) {
   SlurmOptions slurm;
   slurm.partition = "comp";
   slurm.time = "01:00:00";
-  slurm.extra = {"--qos=high"};
+  slurm.extra = {"--qos=high", "--exclusive", "-A show"};
   const std::string script = slurmArrayScript(exampleTask(), slurm);
   EXPECT_EQ(script.rfind("#!/bin/sh\n", 0), 0u);
   for (const char* line :
-       {"#SBATCH --array=0-11\n", "#SBATCH --chdir=/shots/sh010\n",
-        "#SBATCH --output=/shots/sh010/taa-farm-%A_%a.log\n", "#SBATCH --open-mode=append\n",
-        "#SBATCH --requeue\n", "#SBATCH --partition=comp\n", "#SBATCH --time=01:00:00\n",
-        "#SBATCH --qos=high\n",
+       {"#SBATCH --array=\"0-11\"\n", "#SBATCH --output=\"taa-farm-%A_%a.log\"\n",
+        "#SBATCH --open-mode=\"append\"\n", "#SBATCH --requeue\n",
+        "#SBATCH --partition=\"comp\"\n", "#SBATCH --time=\"01:00:00\"\n",
+        "#SBATCH --qos=\"high\"\n", "#SBATCH --exclusive\n", "#SBATCH -A \"show\"\n",
+        "\ncd -- /shots/sh010 || exit 1\n"
         "exec /opt/taa/bin/taa-farm run --chunk 20 --preroll 16 render.####.exr --preset cycles "
         "--frames 1001-1240 -o out/resolved.####.exr\n"}) {
     EXPECT_NE(script.find(line), std::string::npos) << line << " in\n" << script;
   }
   EXPECT_EQ(script.find("--mem"), std::string::npos);
+  EXPECT_EQ(script.find("--chdir"), std::string::npos);  // sbatch starts where submit runs it
+  slurm.logDir = "/logs/sh010";
+  EXPECT_NE(slurmArrayScript(exampleTask(), slurm)
+                .find("#SBATCH --output=\"/logs/sh010/taa-farm-%A_%a.log\"\n"),
+            std::string::npos);
+}
+
+std::string usageErrorOfScript(const TaskCommand& task, const SlurmOptions& slurm) {
+  try {
+    slurmArrayScript(task, slurm);
+  } catch (const UsageError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(SbatchDirectives, SbatchReadsBackExactlyTheValueGiven) {
+  for (const std::string value :
+       {"plain", "My Show", "it's \"quoted\"", "back\\slash\\", "#not a comment", ":colon",
+        "a hetjob and a PackJob", "$(touch pwned) `id` ${HOME}", "tab\there", "\xff\xfe bytes",
+        "trailing\\"}) {
+    const testing::ParsedScript parsed =
+        testing::parseBatchScript(sbatchLine("--job-name", value, "--job-name"));
+    EXPECT_EQ(parsed.error, "") << value;
+    EXPECT_EQ(parsed.sbatchWords, (std::vector<std::string>{"--job-name=" + value})) << value;
+  }
+}
+
+TEST(SbatchDirectives, ALineBreakIsRefusedNamingWhereItCameFrom) {
+  TaskCommand task = exampleTask();
+  SlurmOptions slurm;
+  slurm.mem = "4G\n#SBATCH --x";
+  EXPECT_NE(usageErrorOfScript(task, slurm).find("--mem holds a line break"), std::string::npos);
+  slurm = {};
+  slurm.extra = {"--comment=a\rb"};
+  EXPECT_NE(usageErrorOfScript(task, slurm).find("line break"), std::string::npos);
+  slurm = {};
+  slurm.logDir = "/logs/%j";
+  EXPECT_NE(usageErrorOfScript(task, slurm).find("'%'"), std::string::npos);
+  slurm = {};
+  for (const std::string bad : {"qos=high", "--", "-", "--q os=x", "-pp", "--$(x)=1"}) {
+    slurm.extra = {bad};
+    EXPECT_NE(usageErrorOfScript(task, slurm).find("expected one sbatch option"),
+              std::string::npos)
+        << bad;
+  }
+}
+
+// Random values over every byte but NUL: whatever the folder, names and arguments hold, sbatch
+// reads back the values given and bash runs cd and taa-farm with the arguments given, nothing
+// else (a value with a line break in an #SBATCH line is refused instead).
+TEST(SbatchDirectives, PropertyAnyValueComesBackExactlyOrIsRefused) {
+  std::mt19937 random(25);
+  auto randomText = [&random](bool lineBreaks) {
+    static const std::string nasty = " '\"\\#$`;&|<>(){}*?~!:\t\n\r\xff\xc3";
+    std::string text;
+    const int length = int(random() % 24);
+    for (int i = 0; i < length; ++i) {
+      char c = random() % 2 ? nasty[random() % nasty.size()] : char(1 + random() % 255);
+      if (!lineBreaks && (c == '\n' || c == '\r')) c = '_';
+      text += c;
+    }
+    return text;
+  };
+  int submitted = 0, refused = 0;
+  for (int round = 0; round < 200; ++round) {
+    TaskCommand task = exampleTask();
+    task.workingFolder = "/shots/" + randomText(true);
+    task.taatoolArgs = {randomText(true), "--frames", "1-3", "-o", randomText(true)};
+    SlurmOptions slurm;
+    slurm.jobName = randomText(round % 4 == 0);
+    slurm.partition = randomText(false);
+    slurm.logDir = "/logs/" + randomText(false);
+    std::replace(slurm.logDir.begin(), slurm.logDir.end(), '%', '_');
+    slurm.extra = {"--comment=" + randomText(false)};
+    std::string script;
+    try {
+      script = slurmArrayScript(task, slurm);
+    } catch (const UsageError& e) {
+      ASSERT_NE(slurm.jobName.find_first_of("\r\n"), std::string::npos) << e.what();
+      ++refused;
+      continue;
+    }
+    ++submitted;
+    const testing::ParsedScript parsed = testing::parseBatchScript(script);
+    ASSERT_EQ(parsed.error, "") << script;
+    EXPECT_EQ(parsed.sbatchWords,
+              (std::vector<std::string>{"--job-name=" + slurm.jobName, "--array=0-11",
+                                        "--output=" + slurm.logDir + "/taa-farm-%A_%a.log",
+                                        "--open-mode=append", "--requeue",
+                                        "--partition=" + slurm.partition,
+                                        "--comment=" + slurm.extra[0]}))
+        << script;
+    std::vector<std::string> expected = {"cd", "--", task.workingFolder, "exec", task.farmPath,
+                                         "run", "--chunk", "20", "--preroll", "16"};
+    expected.insert(expected.end(), task.taatoolArgs.begin(), task.taatoolArgs.end());
+    EXPECT_EQ(testing::commandWordsBashRuns(parsed.body), expected) << script;
+  }
+  EXPECT_GT(submitted, 100);
+  EXPECT_GT(refused, 5);
 }
 
 TEST(TaskCommands, OtherSchedulersRunTheSameLineWithTheirTokens) {

@@ -323,3 +323,34 @@ def test_a_task_missing_an_input_fails_alone(cluster, work):
     assert ("taa-farm ERROR: input frame not ready (missing), needed by task 3 : "
             f"{sample}/motion.0022.exr (frame 22, channel motion)") in log_of(logs, job, 3)
     assert sorted(os.listdir(out)) == [f"r.{f:04d}.exr" for f in range(1, 19)]
+
+
+def test_submitting_from_a_folder_with_a_space_or_a_line_break(cluster, reference):
+    """Issue 25, defects 1 and 5: the working folder went raw into "#SBATCH --chdir=": a line
+    break followed by a command put that command into the batch script (every task ran it), a
+    space made sbatch refuse the job. Submitted from such folders, with a job name sbatch's
+    own parser would split or cut ('#', quotes, "hetjob"), the job runs nothing else, keeps
+    its name and gives taatool's frames."""
+    marker = os.path.join(TMP, "slurm", "INJECTED")
+    env = dict(cluster.env, TAA_TEST_INJECTED=marker)
+    for folder_name in ("My Show", 'evil\ntouch "$TAA_TEST_INJECTED"\n'):
+        folder = os.path.join(TMP, "slurm", folder_name)
+        shutil.rmtree(folder, ignore_errors=True)
+        os.makedirs(folder)
+        out = os.path.join(folder, "out")
+        name = 'it\'s "my" #1 hetjob'
+        result = subprocess.run([FARM, "submit", "--chunk", str(CHUNK), "--job-name", name,
+                                 *shot_args(out), "--mode", "window"],
+                                capture_output=True, text=True, env=env, cwd=folder)
+        assert result.returncode == 0, result.stderr
+        job = result.stdout.strip()
+        shown = subprocess.run(["scontrol", "show", "job", job], capture_output=True,
+                               text=True, env=cluster.env).stdout
+        assert f"JobName={name}\n" in shown, shown
+        states = wait_until_done(cluster, job)
+        assert states == {t: ("COMPLETED", "0:0") for t in range(4)}, (folder_name, states)
+        for frame in FRAMES:
+            assert same_frame(frame_path(out, frame), frame_path(reference["window"], frame))
+        # The logs' default place is the folder submit ran in.
+        assert os.path.exists(os.path.join(folder, f"taa-farm-{job}_0.log")), os.listdir(folder)
+        assert not os.path.exists(marker), f"the folder's name ran a command ({folder_name!r})"

@@ -43,14 +43,6 @@ Scheduler parseScheduler(const std::string& text) {
   throw UsageError("--scheduler expects one of slurm, opencue, deadline, got \"" + text + "\"");
 }
 
-// sbatch values go into "#SBATCH" lines: one line each.
-std::string oneLine(const std::string& option, const std::string& text) {
-  if (text.find_first_of("\r\n") != std::string::npos) {
-    throw UsageError(option + " must not contain a line break");
-  }
-  return text;
-}
-
 }  // namespace
 
 FarmArguments parseFarmArguments(const std::vector<std::string>& argv) {
@@ -76,18 +68,16 @@ FarmArguments parseFarmArguments(const std::vector<std::string>& argv) {
          args.prerollGiven = true;
        }},
       {"--scheduler", [&](const std::string& v) { args.scheduler = parseScheduler(v); }},
-      {"--partition",
-       [&](const std::string& v) { args.slurm.partition = oneLine("--partition", v); }},
-      {"--time", [&](const std::string& v) { args.slurm.time = oneLine("--time", v); }},
-      {"--mem", [&](const std::string& v) { args.slurm.mem = oneLine("--mem", v); }},
+      {"--partition", [&](const std::string& v) { args.slurm.partition = v; }},
+      {"--time", [&](const std::string& v) { args.slurm.time = v; }},
+      {"--mem", [&](const std::string& v) { args.slurm.mem = v; }},
       {"--cpus-per-task",
        [&](const std::string& v) {
          args.slurm.cpusPerTask = std::to_string(positiveInt("--cpus-per-task", v, 1));
        }},
-      {"--job-name", [&](const std::string& v) { args.slurm.jobName = oneLine("--job-name", v); }},
-      {"--log-dir", [&](const std::string& v) { args.slurm.logDir = oneLine("--log-dir", v); }},
-      {"--sbatch-arg",
-       [&](const std::string& v) { args.slurm.extra.push_back(oneLine("--sbatch-arg", v)); }},
+      {"--job-name", [&](const std::string& v) { args.slurm.jobName = v; }},
+      {"--log-dir", [&](const std::string& v) { args.slurm.logDir = v; }},
+      {"--sbatch-arg", [&](const std::string& v) { args.slurm.extra.push_back(v); }},
   };
   const std::map<std::string, std::function<void()>> flags = {
       {"--dry-run", [&] { args.dryRun = true; }},
@@ -110,7 +100,15 @@ FarmArguments parseFarmArguments(const std::vector<std::string>& argv) {
       {"--sbatch-arg", {"submit"}},
   };
   for (std::size_t i = 1; i < argv.size(); ++i) {
-    const std::string& arg = argv[i];
+    std::string arg = argv[i];
+    // "--chunk=6" as well as "--chunk 6" for taa-farm's own options; anything else is taatool's.
+    std::optional<std::string> attached;
+    if (const std::size_t equals = arg.find('=');
+        arg.compare(0, 2, "--") == 0 && equals != std::string::npos &&
+        withValue.count(arg.substr(0, equals))) {
+      attached = arg.substr(equals + 1);
+      arg.resize(equals);
+    }
     const bool takesValue = withValue.count(arg) > 0;
     if (!takesValue && !flags.count(arg)) {
       args.taatoolArgs.push_back(arg);  // taatool's flags take their values along with them
@@ -124,6 +122,8 @@ FarmArguments parseFarmArguments(const std::vector<std::string>& argv) {
     }
     if (!takesValue) {
       flags.at(arg)();
+    } else if (attached) {
+      withValue.at(arg)(*attached);
     } else if (i + 1 >= argv.size()) {
       throw UsageError("option " + arg + " needs a value");
     } else {

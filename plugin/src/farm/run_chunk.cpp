@@ -7,6 +7,7 @@
 #include "cli/input_report.h"
 #include "farm/chunk_plan.h"
 #include "farm/farm_errors.h"
+#include "util/one_line_text.h"
 #include "farm/shot.h"
 #include "farm/verbs.h"
 #include "io/output_completeness.h"
@@ -102,11 +103,12 @@ int runChunk(const FarmArguments& args) {
     const std::string path = outputPath(shot, frame);
     const io::OutputCheck check = io::checkOutputComplete(path, shot.expectedOptions);
     if (check.complete) {
-      std::cout << prefix << "frame " << frame << " complete, skipped: " << path << "\n";
+      std::cout << prefix << "frame " << frame << " complete, skipped: " << oneLineText(path)
+                << "\n";
     } else {
       if (check.reason != "missing") {
         std::cout << prefix << "frame " << frame << " is resolved again (" << check.reason
-                  << "): " << path << "\n";
+                  << "): " << oneLineText(path) << "\n";
       }
       pending.push_back(frame);
     }
@@ -151,7 +153,7 @@ int runChunk(const FarmArguments& args) {
     if (report.preroll) {
       std::cout << " resolved for history, not written";
     } else {
-      std::cout << " written: " << report.outputPath;
+      std::cout << " written: " << oneLineText(report.outputPath);  // one line, whatever the path
       written.push_back(report.frame);
     }
     std::cout << std::endl;  // flushed: a farm manager reads it as it comes

@@ -3,6 +3,9 @@
 #include <algorithm>
 
 #include "cli/input_report.h"
+#include "farm/farm_errors.h"
+#include "farm/sbatch_directives.h"
+#include "util/one_line_text.h"
 
 namespace taa::farm {
 namespace {
@@ -21,8 +24,13 @@ std::vector<std::string> runArguments(const TaskCommand& task, const std::string
   return args;
 }
 
-// Deadline splits its arguments string at spaces outside double quotes, which <QUOTE> stands for.
+// Deadline splits its arguments string at spaces outside double quotes, which <QUOTE> stands for;
+// it has no way to write a double quote or a line break inside one.
 std::string deadlineQuoted(const std::string& text) {
+  if (text.find_first_of("\"\r\n") != std::string::npos) {
+    throw UsageError("Deadline's job arguments cannot carry a double quote or a line break: \"" +
+                     oneLineText(text) + "\"");
+  }
   const bool plain = !text.empty() && text.find_first_of(" \t\"") == std::string::npos;
   return plain ? text : "<QUOTE>" + text + "<QUOTE>";
 }
@@ -68,23 +76,37 @@ std::string runCommandLine(const TaskCommand& task, const std::string& chunk) {
 }
 
 std::string slurmArrayScript(const TaskCommand& task, const SlurmOptions& slurm) {
-  const std::string logDir = slurm.logDir.empty() ? task.workingFolder : slurm.logDir;
   std::string script = "#!/bin/sh\n";
   script += "# taa-farm: frames " + task.framesText + " in " + std::to_string(task.chunkCount) +
             " chunk(s) of " + std::to_string(task.chunkSize) +
             ", one array task each; `taa-farm run` takes its chunk from SLURM_ARRAY_TASK_ID.\n";
-  auto option = [&script](const std::string& text) { script += "#SBATCH " + text + "\n"; };
-  option("--job-name=" + (slurm.jobName.empty() ? std::string("taa-farm") : slurm.jobName));
-  option("--array=0-" + std::to_string(task.chunkCount - 1));
-  option("--chdir=" + task.workingFolder);
-  option("--output=" + logDir + "/taa-farm-%A_%a.log");
-  option("--open-mode=append");  // a requeued task's run adds to its log
-  option("--requeue");
-  if (!slurm.partition.empty()) option("--partition=" + slurm.partition);
-  if (!slurm.time.empty()) option("--time=" + slurm.time);
-  if (!slurm.mem.empty()) option("--mem=" + slurm.mem);
-  if (!slurm.cpusPerTask.empty()) option("--cpus-per-task=" + slurm.cpusPerTask);
-  for (const std::string& extra : slurm.extra) option(extra);
+  // Every value goes through sbatchLine, which quotes it for sbatch's own parser. The working
+  // folder is not among them: sbatch runs the job where it was started (submit starts it in
+  // the working folder), and the logs' default path is relative to it.
+  script += sbatchLine("--job-name", slurm.jobName.empty() ? "taa-farm" : slurm.jobName,
+                       "--job-name");
+  script += sbatchLine("--array", "0-" + std::to_string(task.chunkCount - 1), "--chunk");
+  const std::string logName = "taa-farm-%A_%a.log";
+  if (slurm.logDir.find('%') != std::string::npos) {
+    throw UsageError("--log-dir holds '%', which Slurm would expand in the log's path: \"" +
+                     oneLineText(slurm.logDir) + "\"");
+  }
+  script += sbatchLine("--output", slurm.logDir.empty() ? logName : slurm.logDir + "/" + logName,
+                       "--log-dir");
+  script += sbatchLine("--open-mode", "append", "--open-mode");  // a requeued run adds to its log
+  script += "#SBATCH --requeue\n";
+  const std::pair<const char*, const std::string*> given[] = {
+      {"--partition", &slurm.partition},
+      {"--time", &slurm.time},
+      {"--mem", &slurm.mem},
+      {"--cpus-per-task", &slurm.cpusPerTask}};
+  for (const auto& [name, value] : given) {
+    if (!value->empty()) script += sbatchLine(name, *value, name);
+  }
+  for (const std::string& extra : slurm.extra) script += sbatchLineOf(extra);
+  // The shell runs the rest: every word shell-quoted. A folder the node cannot enter fails the
+  // task here instead of running it elsewhere (slurmd falls back to /tmp).
+  script += "cd -- " + shellQuoted(task.workingFolder) + " || exit 1\n";
   // exec: signals Slurm sends the task (scancel, time limit) reach taa-farm itself.
   script += "exec " + runCommandLine(task, std::to_string(task.chunkSize)) + "\n";
   return script;
@@ -93,7 +115,7 @@ std::string slurmArrayScript(const TaskCommand& task, const SlurmOptions& slurm)
 std::string openCueLayerText(const TaskCommand& task) {
   return "# OpenCue (printed, not submitted): one layer, frame range " + task.framesText +
          ", chunk size " + std::to_string(task.chunkSize) + ", working folder " +
-         task.workingFolder + ", command:\n" +
+         oneLineText(task.workingFolder) + ", command:\n" +
          runCommandLine(task, "#FRAME_START#-#FRAME_END#") + "\n";
 }
 
