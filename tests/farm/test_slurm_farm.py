@@ -217,7 +217,7 @@ def find_task_process(job, task):
     return None
 
 
-TEMPORARY_WRITER = re.compile(r"\.taa-tmp-.*-(\d+)-\d+\.exr$")
+TEMPORARY_WRITER = re.compile(r"\.taa-tmp-.*-(\d+)-[0-9a-f]+\.exr$")
 
 
 def writer_alive(name):
@@ -227,7 +227,7 @@ def writer_alive(name):
 
 
 def temporaries(folder):
-    """Hidden files in `folder`: taa's temporaries (".<frame>.taa-tmp-<host>-<pid>-<n>.exr")."""
+    """Hidden files in `folder`: taa's temporaries (".<frame>.taa-tmp-<host>-<pid>-<random>.exr")."""
     try:
         return [name for name in os.listdir(folder) if name.startswith(".")]
     except FileNotFoundError:

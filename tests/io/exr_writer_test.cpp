@@ -11,6 +11,8 @@
 #include <functional>
 #include <iterator>
 
+#include "io/stale_temp_files.h"
+#include "io/temporary_file.h"
 #include "taa/error.h"
 #include "test_files.h"
 
@@ -339,6 +341,51 @@ TEST(WriteExrAtomic, SizeMismatchStatesBothSizes) {
   });
   EXPECT_TRUE(contains(error.what(), "4x3")) << error.what();
   EXPECT_TRUE(contains(error.what(), "5x3")) << error.what();
+}
+
+// Issue 25, defect 3: temporaries had predictable names (".NAME.taa-tmp-HOST-PID-N.exr") and
+// were opened with O_TRUNC, so a link planted at one had its target overwritten. Links planted
+// at every name the old scheme would give this process's first hundred writes must not be
+// followed.
+TEST(WriteExrAtomic, LinksPlantedAtTemporaryNamesAreNeverFollowed) {
+  const std::string folder = scratchFolder();
+  const std::string victim = folder + "/victim.txt";
+  taa::test::writeTextFile(victim, "precious");
+  for (int n = 0; n < 100; ++n) {
+    fs::create_symlink(victim, folder + "/" + temporaryFileName("out.exr", std::to_string(n)));
+  }
+  writeExrAtomic(folder + "/out.exr", makeRgba(5, 3, [](int, int) { return 0.5f; }),
+                 cyclesLikeTemplate(), {});
+  std::ifstream in(victim);
+  EXPECT_EQ(std::string(std::istreambuf_iterator<char>(in), {}), "precious");
+  EXPECT_TRUE(fs::is_regular_file(fs::symlink_status(folder + "/out.exr")));
+}
+
+TEST(TemporaryFile, NamesAreUnguessableAndCreatedExclusively) {
+  const std::string folder = scratchFolder();
+  const fs::path target = fs::path(folder) / "out.exr";
+  const TemporaryFile first(target), second(target);
+  EXPECT_NE(first.path(), second.path());
+  for (const TemporaryFile* file : {&first, &second}) {
+    const std::string name = file->path().filename().string();
+    const std::string prefix = temporaryFileName("out.exr", "");
+    ASSERT_EQ(name.compare(0, prefix.size() - 4, prefix, 0, prefix.size() - 4), 0) << name;
+    const std::string unique = name.substr(prefix.size() - 4, name.size() - prefix.size());
+    EXPECT_EQ(unique.size(), 16u) << name;
+    EXPECT_EQ(unique.find_first_not_of("0123456789abcdef"), std::string::npos) << name;
+    EXPECT_TRUE(fs::is_regular_file(fs::symlink_status(file->path())));
+  }
+  const fs::path kept = first.path();
+  { const TemporaryFile dropped(target); }  // not committed: removed
+  EXPECT_EQ(listFolder(folder).size(), 2u);
+  EXPECT_TRUE(fs::exists(kept));
+}
+
+TEST(TemporaryFile, AFolderThatCannotBeWrittenIsAnErrorNamingIt) {
+  const std::string folder = scratchFolder() + "/missing";
+  const Error error = errorOf([&] { TemporaryFile file(fs::path(folder) / "out.exr"); });
+  EXPECT_TRUE(contains(error.what(), "cannot create a temporary file in " + folder))
+      << error.what();
 }
 
 }  // namespace

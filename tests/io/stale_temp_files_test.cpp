@@ -34,11 +34,11 @@ TEST(StaleTemporaries, NamesCarryHostAndProcess) {
   const std::string host = temporaryHostTag();
   EXPECT_FALSE(host.empty());
   EXPECT_EQ(host.find('-'), std::string::npos);  // '-' separates the name's fields
-  EXPECT_EQ(temporaryFileName("r.0001.exr", 7),
-            ".r.0001.exr.taa-tmp-" + host + "-" + std::to_string(::getpid()) + "-7.exr");
+  EXPECT_EQ(temporaryFileName("r.0001.exr", "0f3a"),
+            ".r.0001.exr.taa-tmp-" + host + "-" + std::to_string(::getpid()) + "-0f3a.exr");
   EXPECT_EQ(farmScratchPrefix(), ".taa-farm-" + host + "-" + std::to_string(::getpid()) + "-");
   // A long name is cut so that the whole fits a file system's 255 bytes.
-  EXPECT_LE(temporaryFileName(std::string(250, 'x'), 123456).size(), 255u);
+  EXPECT_LE(temporaryFileName(std::string(250, 'x'), std::string(16, 'f')).size(), 255u);
 }
 
 // The run that dies is simulated by names with a dead pid; the writer's own names are tested in
@@ -50,6 +50,7 @@ TEST(StaleTemporaries, OnlyThoseOfDeadWritersOnThisHostAndOfThePatternAreRemoved
   const std::string live = std::to_string(::getpid());
   const std::vector<std::string> stale = {
       ".r.0002.exr.taa-tmp-" + host + "-" + dead + "-0.exr",
+      ".r.0008.exr.taa-tmp-" + host + "-" + dead + "-9c0ffee5d00dfeed.exr",  // random part
       ".r.0003.exr.taa-tmp-" + dead + "-4.exr",  // named before temporaries carried the host
       ".taa-farm-" + host + "-" + dead + "-k2j3h4",
   };
@@ -58,17 +59,18 @@ TEST(StaleTemporaries, OnlyThoseOfDeadWritersOnThisHostAndOfThePatternAreRemoved
       ".r.0005.exr.taa-tmp-otherhost-" + dead + "-0.exr",           // cannot be checked here
       ".other.0001.exr.taa-tmp-" + host + "-" + dead + "-0.exr",   // another output's
       ".r.0006.exr.taa-tmp-" + host + "-" + dead + "-x.exr",       // not a temporary's name
+      ".r.0009.exr.taa-tmp-" + host + "-" + dead + "-" + std::string(17, 'a') + ".exr",
       ".taa-farm-" + host + "-" + live + "-abcd",
       ".taa-farm-k2j3h4",                                            // no writer named
       "r.0001.exr",
   };
   for (const auto& name : stale) touch(folder / name);
   for (const auto& name : kept) touch(folder / name);
-  fs::remove(folder / stale[2]);
-  fs::create_directories(folder / stale[2]);
-  touch(folder / stale[2] / "r.0007.exr");
-  fs::remove(folder / kept[4]);
-  fs::create_directories(folder / kept[4]);
+  fs::remove(folder / stale[3]);
+  fs::create_directories(folder / stale[3]);
+  touch(folder / stale[3] / "r.0007.exr");
+  fs::remove(folder / kept[5]);
+  fs::create_directories(folder / kept[5]);
 
   const StaleTemporaries result = removeStaleTemporaries((folder / "r.####.exr").string());
   EXPECT_TRUE(result.failed.empty());

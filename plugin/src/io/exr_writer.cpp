@@ -1,16 +1,14 @@
 #include "io/exr_writer.h"
 
 #include <algorithm>
-#include <atomic>
 #include <cctype>
-#include <cerrno>
 #include <cmath>
-#include <cstdio>
-#include <cstring>
 #include <filesystem>
 #include <system_error>
 
-#include "io/stale_temp_files.h"
+#include <OpenImageIO/filesystem.h>
+
+#include "io/temporary_file.h"
 #include "taa/error.h"
 
 namespace taa::io {
@@ -51,27 +49,6 @@ bool isNumber(const std::string& text) {
   return end == text.c_str() + text.size() && value >= 0.0;
 }
 
-// Removes the temporary file unless the write was committed (renamed into place).
-class TemporaryFile {
- public:
-  explicit TemporaryFile(fs::path path) : path_(std::move(path)) {}
-  ~TemporaryFile() {
-    if (!committed_) {
-      std::error_code ignored;
-      fs::remove(path_, ignored);
-    }
-  }
-  TemporaryFile(const TemporaryFile&) = delete;
-  TemporaryFile& operator=(const TemporaryFile&) = delete;
-
-  const fs::path& path() const { return path_; }
-  void commit() { committed_ = true; }
-
- private:
-  fs::path path_;
-  bool committed_ = false;
-};
-
 // RGBA (widened to float) followed by the extra channels, interleaved per pixel as the writer
 // wants them.
 std::vector<float> interleave(const ImageView& rgba, const ExtraChannels& extra) {
@@ -95,13 +72,6 @@ std::string compressionAttribute(const std::string& compression) {
     return compression + ":" + std::to_string(kDefaultZipLevel);
   }
   return compression;
-}
-
-// ".<name>.taa-tmp-<host>-<pid>-<n>.exr": hidden, unique per host, process and call, ending in
-// .exr; a later run removes it if this process dies before the rename (io/stale_temp_files.h).
-fs::path temporaryPathFor(const fs::path& finalPath) {
-  static std::atomic<unsigned> counter{0};
-  return finalPath.parent_path() / temporaryFileName(finalPath.filename().string(), counter++);
 }
 
 std::vector<std::string> colorNames(const WriteOptions& options) {
@@ -210,7 +180,7 @@ void writeView(const std::string& path, const ImageView& rgba, const OIIO::Image
     throw Error("cannot create the output folder " + folder.string() + ": " + reason, context);
   }
 
-  TemporaryFile temporary(temporaryPathFor(finalPath));
+  TemporaryFile temporary(finalPath);
   const OIIO::ImageSpec spec = makeOutputSpec(rgba, templateSpec, options, extra);
   // Ask for the EXR writer by name: the final path's extension must not choose the format.
   auto output = OIIO::ImageOutput::create("openexr");
@@ -220,6 +190,11 @@ void writeView(const std::string& path, const ImageView& rgba, const OIIO::Image
     if (reason.empty()) reason = "unknown error";
     throw Error(what + ": " + reason, context);
   };
+  // Through the file TemporaryFile opened: the writer never opens a path itself.
+  OIIO::Filesystem::IOFile proxy(temporary.stream(), OIIO::Filesystem::IOProxy::Write);
+  if (!output->supports("ioproxy") || !output->set_ioproxy(&proxy)) {
+    fail("the OpenEXR writer cannot write through an open file");
+  }
   if (!output->open(temporary.path().string(), spec)) fail("cannot open for writing");
   // Without extra channels the samples go to OIIO as they are (converted only into a file of
   // the other type); with them, everything is interleaved as float, which converts exactly.
@@ -233,15 +208,7 @@ void writeView(const std::string& path, const ImageView& rgba, const OIIO::Image
   if (!written) fail("cannot write pixels");
   if (!output->close() || output->has_error()) fail("cannot finish writing");
   output.reset();
-
-  // rename() replaces an existing file atomically on POSIX: readers see old or new, never half.
-  if (std::rename(temporary.path().c_str(), finalPath.c_str()) != 0) {
-    const int renameErrno = errno;
-    throw Error("cannot move the written file into place: " +
-                    std::string(std::strerror(renameErrno)),
-                context);
-  }
-  temporary.commit();
+  temporary.commitAs(finalPath);
 }
 
 }  // namespace

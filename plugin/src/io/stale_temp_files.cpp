@@ -33,6 +33,15 @@ bool allDigits(const std::string& text) {
          std::all_of(text.begin(), text.end(), [](unsigned char c) { return std::isdigit(c); });
 }
 
+// The name's unique part: random hex digits (io/temporary_file), or a counter in names written
+// before temporaries were unguessable.
+bool isUniquePart(const std::string& text) {
+  return !text.empty() && text.size() <= 16 &&
+         std::all_of(text.begin(), text.end(), [](unsigned char c) {
+           return std::isdigit(c) || (c >= 'a' && c <= 'f');
+         });
+}
+
 std::vector<std::string> splitOnDash(const std::string& text) {
   std::vector<std::string> fields;
   std::size_t begin = 0;
@@ -55,7 +64,7 @@ std::optional<Writer> parseWriter(const std::vector<std::string>& fields) {
   return std::nullopt;
 }
 
-// ".<name>.taa-tmp-<host>-<pid>-<n>.exr" -> name and writer.
+// ".<name>.taa-tmp-<host>-<pid>-<unique>.exr" -> name and writer.
 std::optional<std::pair<std::string, Writer>> parseTemporaryFile(const std::string& file) {
   const std::string extension = ".exr";
   if (file.size() < 2 + extension.size() || file[0] != '.' ||
@@ -68,8 +77,8 @@ std::optional<std::pair<std::string, Writer>> parseTemporaryFile(const std::stri
   if (fieldsBegin > file.size() - extension.size()) return std::nullopt;
   std::vector<std::string> fields =
       splitOnDash(file.substr(fieldsBegin, file.size() - extension.size() - fieldsBegin));
-  if (fields.size() < 2 || !allDigits(fields.back())) return std::nullopt;
-  fields.pop_back();  // the per-process counter
+  if (fields.size() < 2 || !isUniquePart(fields.back())) return std::nullopt;
+  fields.pop_back();
   const std::optional<Writer> writer = parseWriter(fields);
   if (!writer) return std::nullopt;
   return std::make_pair(file.substr(1, marker - 1), *writer);
@@ -107,9 +116,9 @@ std::string temporaryHostTag() {
   return tag;
 }
 
-std::string temporaryFileName(const std::string& finalName, unsigned counter) {
+std::string temporaryFileName(const std::string& finalName, const std::string& unique) {
   return "." + finalName.substr(0, 200) + kTempMarker + temporaryHostTag() + "-" +
-         std::to_string(::getpid()) + "-" + std::to_string(counter) + ".exr";
+         std::to_string(::getpid()) + "-" + unique + ".exr";
 }
 
 std::string farmScratchPrefix() {

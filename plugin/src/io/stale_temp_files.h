@@ -4,7 +4,7 @@
 // never written). A writer killed before its rename (SIGKILL, a node that lost power)
 // leaves them behind. Their names carry the writer's host and process id, so a later run over
 // the same output can tell the dead ones from those of a run still going:
-//   .<file name>.taa-tmp-<host>-<pid>-<n>.exr   a frame being written
+//   .<file name>.taa-tmp-<host>-<pid>-<random>.exr   a frame being written (io/temporary_file)
 //   .taa-farm-<host>-<pid>-<anything>/          a farm task's scratch folder
 // Only temporaries of this host whose process is gone are removed: another host's process
 // cannot be checked from here (on a shared file system its run may still be going).
@@ -19,9 +19,9 @@ namespace taa::io {
 // the name's fields), at most 64 characters.
 std::string temporaryHostTag();
 
-// ".<finalName>.taa-tmp-<host>-<pid>-<counter>.exr" (finalName cut to 200 bytes, so the whole
-// stays within a file system's 255).
-std::string temporaryFileName(const std::string& finalName, unsigned counter);
+// ".<finalName>.taa-tmp-<host>-<pid>-<unique>.exr" (finalName cut to 200 bytes, so the whole
+// stays within a file system's 255; `unique` at most 16 hex digits).
+std::string temporaryFileName(const std::string& finalName, const std::string& unique);
 
 // ".taa-farm-<host>-<pid>-": the prefix of a farm scratch folder made by this process.
 std::string farmScratchPrefix();
