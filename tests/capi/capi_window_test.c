@@ -4,6 +4,8 @@
  * taatool's frame bit for bit, whatever order frames are pushed and resolved in; missing
  * frames are errors that say which frame and why; history mode is untouched.
  *   capi_window_test FIXTURE_FILE */
+#include <limits.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -304,6 +306,38 @@ static void test_history_mode_unchanged(void) {
   taa_node_destroy(plain);
 }
 
+/* Issue 25, defect 2: frame numbers at the ends of the int range (and random ones) resolve
+ * from their window; a frame numbered INT_MAX made the node plan an endless window. */
+static void test_frame_numbers_anywhere_in_the_int_range(void) {
+  const int starts[] = {INT_MAX - 2, INT_MIN, -1000000007, 1999999999};
+  unsigned seed = 25u;
+  for (int round = 0; round < 8; ++round) {
+    int start;
+    if (round < 4) {
+      start = starts[round];
+    } else {
+      seed = seed * 1103515245u + 12345u; /* any int but the last two */
+      start = (int)(seed % 4294967293u - 2147483648.0);
+    }
+    taa_node* node = window_node(1);
+    if (!node) return;
+    for (int i = 0; i < 3; ++i) {
+      CHECK(push_as(node, start + i, 1 + i) == TAA_OK, "push %d: %s", start + i,
+            taa_node_last_error(node));
+    }
+    for (int i = 0; i < 3; ++i) {
+      const taa_status s = taa_node_resolve_frame(node, start + i);
+      CHECK(s == TAA_OK, "resolve %d gave %d: %s", start + i, s, taa_node_last_error(node));
+    }
+    taa_buffer out = float_buffer(output, fx.width, fx.height, 4);
+    CHECK(taa_node_read_output(node, &out) == TAA_OK, "%s", taa_node_last_error(node));
+    int bad = 0;
+    for (size_t i = 0; i < frame_values; ++i) bad += isfinite(output[i]) ? 0 : 1;
+    CHECK(bad == 0, "frame %d: %d non-finite output values", start + 2, bad);
+    taa_node_destroy(node);
+  }
+}
+
 int main(int argc, char** argv) {
   if (argc != 2 || !window_fixture_load(argv[1], &fx)) {
     fprintf(stderr, "usage: capi_window_test FIXTURE_FILE\n");
@@ -320,6 +354,7 @@ int main(int argc, char** argv) {
   test_replacing_a_frame();
   test_missing_frames();
   test_history_mode_unchanged();
+  test_frame_numbers_anywhere_in_the_int_range();
   free(output);
   window_fixture_free(&fx);
   return test_report("capi_window_test");

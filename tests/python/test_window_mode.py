@@ -152,3 +152,22 @@ def test_node_window_errors(frames):
     # The node still works after errors: frame 4's window is 3-4 once 3 is back.
     push(node, frames, 3)
     assert node.resolve(4).shape == frames[4][0].shape
+
+
+def test_frame_numbers_anywhere_in_the_int_range(frames):
+    """Issue 25, defect 2: pushing and resolving frame 2**31 - 1 grew without bound (13.4 GB
+    in 10 minutes). Both ends of the int range and random numbers between resolve from their
+    windows, in both modes; numbers beyond the range are an error, not a wrapped frame."""
+    rng = random.Random(25)
+    starts = [2**31 - 3, -2**31] + [rng.randrange(-2**31, 2**31 - 2) for _ in range(4)]
+    for start in starts:
+        for mode in ("window", "history"):
+            node = taa.Node(mode=mode, window=1)
+            for i in range(3):
+                color, depth, motion = frames[FRAMES[0] + i]
+                node.push(color, depth=depth, motion=motion, frame=start + i)
+            if mode == "window":
+                for i in range(3):
+                    assert np.isfinite(node.resolve(start + i)).all(), (start, i)
+    with pytest.raises(TypeError):
+        taa.Node(mode="window", window=1).push(frames[FRAMES[0]][0], frame=2**31)

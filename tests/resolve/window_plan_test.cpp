@@ -3,7 +3,9 @@
 // the frames that exist, not on the frames asked for.
 #include <gtest/gtest.h>
 
+#include <limits>
 #include <numeric>
+#include <random>
 
 #include "resolve/window_plan.h"
 
@@ -62,6 +64,39 @@ TEST(WindowPlan, ZeroRadiusReadsTheOutputsAlone) {
   expectWindow(plan, 3, 3, 3);
   expectWindow(plan, 7, 7, 7);
   EXPECT_EQ(plan.reads, (std::vector<int>{3, 7}));
+}
+
+// Issue 25, defect 2: a frame numbered INT_MAX made the plan's loop over its window wrap around
+// and read without end. Frames at both ends of the int range, and random ones anywhere in it,
+// get the window of the frames that exist, and nothing beyond them.
+TEST(WindowPlan, FramesAtTheEndsOfTheIntRangeHaveBoundedWindows) {
+  const int top = std::numeric_limits<int>::max(), bottom = std::numeric_limits<int>::min();
+  const WindowPlan high = planWindows({top - 1, top}, {top - 1, top}, {}, 4);
+  expectWindow(high, top, top - 1, top);
+  expectWindow(high, top - 1, top - 1, top);
+  EXPECT_EQ(high.reads, (std::vector<int>{top - 1, top}));
+  const WindowPlan low = planWindows({bottom}, {bottom, bottom + 1, bottom + 2}, {}, 1);
+  expectWindow(low, bottom, bottom, bottom + 1);
+  EXPECT_EQ(low.shotStarts, (std::set<int>{bottom}));
+  const WindowPlan huge = planWindows({top}, {top}, {}, top);  // any radius
+  expectWindow(huge, top, top, top);
+
+  std::mt19937 random(25);
+  for (int round = 0; round < 200; ++round) {
+    const int radius = int(random() % 9);
+    std::vector<int> frames;
+    const int start = round % 3 == 0 ? top - int(random() % 6)
+                    : round % 3 == 1 ? bottom + int(random() % 6)
+                                     : int(random());
+    for (long long f = start; f <= std::min<long long>(top, (long long)start + 5); ++f) {
+      frames.push_back(int(f));
+    }
+    const WindowPlan plan = planWindows({frames.back()}, frames, {}, radius);
+    const FrameWindow window = plan.windows.at(frames.back());
+    EXPECT_GE(window.first, frames.front());
+    EXPECT_EQ(window.last, frames.back());
+    EXPECT_LE(plan.reads.size(), frames.size());
+  }
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 #include "gl/caller_context.h"
 #include "resolve/jitter.h"
 #include "taa/error.h"
+#include "util/frame_span.h"
 
 namespace taa::capi {
 
@@ -153,7 +154,7 @@ void Node::resolveInHistory(int frame, const ResolveInput& input) {
       resolver_->setOptions(parameters_.resolve);
     }
     parametersChanged_ = false;
-    const bool gap = lastFrame_ && parameters_.resetOnGap && *lastFrame_ + 1 != frame;
+    const bool gap = lastFrame_ && parameters_.resetOnGap && !isNextFrame(*lastFrame_, frame);
     if (gap || resetRequested_) resolver_->resetHistory();
     // The output buffer's type is only known at taa_node_read_output, so the host says which
     // read-back it wants ("output-type"): float by default, which exportColor narrows into a

@@ -8,6 +8,7 @@
 #include "resolve/option_registry.h"
 #include "resolve/window_plan.h"
 #include "taa/error.h"
+#include "util/frame_span.h"
 
 namespace taa::capi {
 namespace {
@@ -68,9 +69,10 @@ void WindowFrames::remove(int frame, const std::string& why) {
 
 int WindowFrames::farthestFrom(int frame) const {
   // ring_ is ascending: on a tie the earlier frame, found first, is kept as the answer.
+  const auto distance = [frame](int held) { return std::llabs((long long)held - frame); };
   int farthest = *ring_.begin();
   for (int held : ring_) {
-    if (std::abs(held - frame) > std::abs(farthest - frame)) farthest = held;
+    if (distance(held) > distance(farthest)) farthest = held;
   }
   return farthest;
 }
@@ -145,7 +147,7 @@ TypedImage WindowFrames::resolve(int frame, SampleType outputType) {
     throw StatusError(TAA_ERROR_MISSING_FRAME,
                       missingMessage(frame, frame, window.first, window.last));
   }
-  for (int f = window.first; f <= window.last; ++f) {
+  for (int f : FrameSpan(window.first, window.last)) {
     if (!ring_.count(f)) {
       throw StatusError(TAA_ERROR_MISSING_FRAME,
                         missingMessage(f, frame, window.first, window.last));

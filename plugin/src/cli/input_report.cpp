@@ -2,6 +2,7 @@
 
 #include "io/sequence_pattern.h"
 #include "taa/error.h"
+#include "util/frame_span.h"
 
 namespace taa::cli {
 namespace {
@@ -26,7 +27,7 @@ std::string frameListText(const std::vector<int>& frames) {
   std::string text;
   for (std::size_t i = 0; i < frames.size();) {
     std::size_t end = i;
-    while (end + 1 < frames.size() && frames[end + 1] == frames[end] + 1) ++end;
+    while (end + 1 < frames.size() && isNextFrame(frames[end], frames[end + 1])) ++end;
     text += (text.empty() ? "" : ", ") + std::to_string(frames[i]);
     if (end > i) text += "-" + std::to_string(frames[end]);
     i = end + 1;

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "util/frame_span.h"
+
 namespace taa::farm {
 
 std::vector<std::vector<int>> splitIntoChunks(const std::vector<int>& shot, int chunkSize) {
@@ -22,7 +24,7 @@ std::vector<int> framesWithin(const std::vector<int>& shot, int first, int last)
 }
 
 bool startsHistory(const std::vector<int>& shot, std::size_t index, const std::set<int>& resets) {
-  return index == 0 || shot[index - 1] != shot[index] - 1 || resets.count(shot[index]) > 0;
+  return index == 0 || !isNextFrame(shot[index - 1], shot[index]) || resets.count(shot[index]) > 0;
 }
 
 ChunkWork planHistoryChunk(const std::vector<int>& shot, const std::vector<int>& chunk,

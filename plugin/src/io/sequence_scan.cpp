@@ -44,7 +44,10 @@ std::optional<int> frameOfFileName(const std::string& pattern, const std::string
   if (name.compare(name.size() - suffix.size(), suffix.size(), suffix) != 0) return std::nullopt;
   const std::string middle =
       name.substr(prefix.size(), name.size() - prefix.size() - suffix.size());
-  if (!isFrameNumber(middle) || middle.size() > 10) return std::nullopt;
+  // At most 10 digits and a sign: "-2147483648" is INT_MIN's name.
+  if (!isFrameNumber(middle) || middle.size() > (middle[0] == '-' ? 11u : 10u)) {
+    return std::nullopt;
+  }
   const long long number = std::stoll(middle);
   if (number < INT_MIN || number > INT_MAX) return std::nullopt;
   const int frame = int(number);

@@ -13,6 +13,7 @@
 #include "ofx/clip_image.h"
 #include "ofx/describe.h"
 #include "ofx/host_suites.h"
+#include "util/frame_span.h"
 
 namespace taa::ofx {
 namespace {
@@ -67,11 +68,11 @@ Instance::~Instance() = default;
 
 FrameRange Instance::sourceRange(int frame) const {
   const OfxRangeD range = clipFrameRange(source_, frame);
-  return {int(std::lround(range.min)), int(std::lround(range.max))};
+  return {nearestFrame(range.min), nearestFrame(range.max)};
 }
 
 TemporalPlan Instance::plan(OfxTime time) const {
-  const int frame = int(std::lround(time));
+  const int frame = nearestFrame(time);
   return planFrame(frame, readSettings(effect_, time), sourceRange(frame));
 }
 
@@ -136,7 +137,7 @@ void Instance::render(OfxTime time, const OfxRectI& window, RenderScale scale) {
     throw std::runtime_error("render scale (" + number(scale.x) + ", " + number(scale.y) +
                              ") must be positive");
   }
-  const int requested = int(std::lround(time));
+  const int requested = nearestFrame(time);
   const PluginSettings settings = readSettings(effect_, time);
   const FrameRange range = sourceRange(requested);
   const TemporalPlan plan = planFrame(requested, settings, range);
@@ -168,7 +169,7 @@ void Instance::renderHistory(ThreadHistory& history, const TemporalPlan& plan,
   }
   const int frame = plan.frame;
   const bool holdsFrame = sameSetup && history.lastFrame == frame;
-  const bool continues = sameSetup && history.lastFrame && *history.lastFrame + 1 == frame;
+  const bool continues = sameSetup && history.lastFrame && isNextFrame(*history.lastFrame, frame);
   if (!holdsFrame) {
     int from = frame;
     if (!continues) {
@@ -178,7 +179,7 @@ void Instance::renderHistory(ThreadHistory& history, const TemporalPlan& plan,
       from = plan.frames.first;
     }
     history.lastFrame.reset();  // until every frame below is in
-    for (int f = from; f <= frame; ++f) {
+    for (int f : FrameSpan(from, frame)) {
       if (suites().effects->abort(effect_)) throw std::runtime_error("render aborted by host");
       history.bounds = pushFrame(history, f, settings, scale);
     }
@@ -214,7 +215,7 @@ void Instance::renderWindow(ThreadHistory& history, const TemporalPlan& plan, Fr
     }
     it = history.ring.erase(it);
   }
-  for (int f = plan.frames.first; f <= plan.frames.last; ++f) {
+  for (int f : FrameSpan(plan.frames.first, plan.frames.last)) {
     if (history.ring.count(f)) continue;
     if (suites().effects->abort(effect_)) throw std::runtime_error("render aborted by host");
     history.ring[f] = pushFrame(history, f, settings, scale);

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "util/frame_span.h"
+
 namespace taa::ofx {
 
 int sequentialRender(const PluginSettings& settings) {
@@ -16,13 +18,15 @@ TemporalPlan planFrame(int frame, const PluginSettings& settings, FrameRange sou
   plan.frame = std::clamp(frame, source.first, source.last);
   if (settings.mode == kModeWindow) {
     // taatool's window on the clip's frames: t-K..t+K, stopping at the clip's ends.
-    plan.frames = {std::max(source.first, plan.frame - settings.windowRadius),
-                   std::min(source.last, plan.frame + settings.windowRadius)};
+    plan.frames = {std::max(source.first, offsetFrame(plan.frame, -settings.windowRadius)),
+                   std::min(source.last, offsetFrame(plan.frame, settings.windowRadius))};
     return plan;
   }
   // History: taatool's result for [start, t]; start is the clip's first frame, or t - N + 1.
   int first = source.first;
-  if (settings.historyFrames > 0) first = std::max(first, plan.frame - settings.historyFrames + 1);
+  if (settings.historyFrames > 0) {
+    first = std::max(first, offsetFrame(plan.frame, 1LL - settings.historyFrames));
+  }
   plan.frames = {first, plan.frame};
   return plan;
 }

@@ -5,31 +5,31 @@
 
 namespace taa {
 
-double radicalInverse(int index, int base) {
+double radicalInverse(long long index, int base) {
   double result = 0.0;
   double digitWeight = 1.0 / base;
-  for (int i = index; i > 0; i /= base) {
+  for (long long i = index; i > 0; i /= base) {
     result += (i % base) * digitWeight;
     digitWeight /= base;
   }
   return result;
 }
 
-int haltonIndex(int frame, const JitterOptions& options) {
+long long haltonIndex(int frame, const JitterOptions& options) {
   long long index = static_cast<long long>(frame) + options.indexOffset;
   if (options.period > 0) {
     long long wrapped = (index - 1) % options.period;
     if (wrapped < 0) wrapped += options.period;
-    return static_cast<int>(wrapped + 1);
+    return wrapped + 1;
   }
   // Without a period a negative index (frames before the offset) mirrors to positive so that
   // pre-roll frames still get well-distributed offsets.
-  return static_cast<int>(index < 0 ? -index : index);
+  return index < 0 ? -index : index;
 }
 
 glm::vec2 frameJitter(int frame, const JitterOptions& options) {
   if (options.source == JitterSource::None) return {0.0f, 0.0f};
-  const int i = haltonIndex(frame, options);
+  const long long i = haltonIndex(frame, options);
   return options.scale * glm::vec2(static_cast<float>(radicalInverse(i, 2) - 0.5),
                                    static_cast<float>(radicalInverse(i, 3) - 0.5));
 }

@@ -13,10 +13,11 @@ namespace taa {
 
 // Radical inverse of `index` in `base` (the Halton sequence): 1 -> 1/2, 2 -> 1/4, 3 -> 3/4 ...
 // for base 2. Index 0 gives 0. Negative indices are an error (returns 0).
-double radicalInverse(int index, int base);
+double radicalInverse(long long index, int base);
 
-// The Halton index used for `frame`, after offset and period.
-int haltonIndex(int frame, const JitterOptions& options);
+// The Halton index used for `frame`, after offset and period: 64 bits, so that every frame
+// number and offset has its own (frame + offset reaches past the int range).
+long long haltonIndex(int frame, const JitterOptions& options);
 
 // The jitter of `frame`: (halton2(i) - 0.5, halton3(i) - 0.5) times options.scale, or (0, 0)
 // for None.

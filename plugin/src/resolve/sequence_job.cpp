@@ -19,6 +19,7 @@
 #include "resolve/window_resolver.h"
 #include "taa/error.h"
 #include "util/frame_buffer_pool.h"
+#include "util/frame_span.h"
 #include "util/interruption.h"
 
 namespace taa {
@@ -323,7 +324,7 @@ void runHistory(JobRun& run, gl::Context& context) {
     // Motion vectors point to frame - 1: any other predecessor makes history meaningless. The
     // resolver restarts history at a new size too; the report says so.
     report.sizeChanged = index > 0 && (report.width != lastWidth || report.height != lastHeight);
-    report.historyReset = index == 0 || job.frames[std::size_t(index) - 1] != frame - 1 ||
+    report.historyReset = index == 0 || !isNextFrame(job.frames[std::size_t(index) - 1], frame) ||
                           job.resetFrames.count(frame) > 0 || report.sizeChanged;
     lastWidth = report.width;
     lastHeight = report.height;

@@ -15,6 +15,7 @@
 #include "resolve/reconstruction_filter.h"
 #include "resolve/window_frame_weight.h"
 #include "taa/error.h"
+#include "util/frame_span.h"
 
 namespace taa {
 namespace {
@@ -262,7 +263,7 @@ struct WindowResolver::Impl {
   // before it when that is in the window, else the one after it, else (a window of one) all
   // static. So a frame's output depends on its window alone, whatever else the ring holds.
   void classifyWindow(int first, int last) {
-    for (int f = first; f <= last; ++f) {
+    for (int f : FrameSpan(first, last)) {
       Slot& slot = slots.at(f);
       if (!classifiesPerSample(slot)) {
         classify(slot, uniformClassification(slot), nullptr);
@@ -326,7 +327,7 @@ struct WindowResolver::Impl {
     slots.erase(found);
     // Its neighbours may be classified against it: a frame added later under its number (with
     // other content, as a C ABI host may push) must not find that classification still there.
-    for (int neighbour : {frame - 1, frame + 1}) {
+    for (int neighbour : {offsetFrame(frame, -1), offsetFrame(frame, 1)}) {
       const auto it = slots.find(neighbour);
       if (it != slots.end()) it->second.classifiedOnce = false;
     }
@@ -364,8 +365,9 @@ struct WindowResolver::Impl {
     // Nearest first, behind before ahead: the shader's chains walk outward in this order, and
     // the sum's order is fixed by the window alone (never by what else the ring holds).
     for (int distance = 1; distance <= options.window.radius; ++distance) {
-      for (int source : {frame - distance, frame + distance}) {
-        if (source < first || source > last) continue;
+      for (const long long wide : {(long long)frame - distance, (long long)frame + distance}) {
+        if (wide < first || wide > last) continue;  // 64 bits: beyond INT_MAX is outside too
+        const int source = int(wide);
         const auto found = slots.find(source);
         if (found == slots.end()) {
           throw Error("window resolve: frame " + std::to_string(source) + " of frame " +
@@ -413,7 +415,7 @@ struct WindowResolver::Impl {
       throw Error("window resolve: frame " + std::to_string(frame) + " is not in the ring",
                   {"", frame});
     }
-    for (int f = first; f <= last; ++f) {
+    for (int f : FrameSpan(first, last)) {
       if (!slots.count(f)) {
         throw Error("window resolve: frame " + std::to_string(f) + " of frame " +
                         std::to_string(frame) + "'s window is not in the ring", {"", frame});
@@ -427,7 +429,7 @@ struct WindowResolver::Impl {
       gatherHasDebug = debugOutput;
     }
     bool chains = false;
-    for (int f = first; f <= last; ++f) chains = chains || slots.at(f).hasMoving;
+    for (int f : FrameSpan(first, last)) chains = chains || slots.at(f).hasMoving;
     const gl::Program& p = gatherPrograms[chains ? 1 : 0];
     p.set("uSigma", options.window.sigma);
     p.set("uColourTolerance", options.window.colourTolerance);
