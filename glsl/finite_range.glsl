@@ -14,15 +14,27 @@ vec4 finiteWorking(vec4 color) {
   return clamp(mix(color, vec4(0.0), isnan(color)), -kWorkingLimit, kWorkingLimit);
 }
 
-// Lanczos' negative lobes push a reconstruction past its samples. Near the top of a compressive
+// Lanczos' negative lobes push a reconstruction past its samples; near the top of a compressive
 // bracket (x / (x + 4) approaches 1) the inverse turns a small overshoot into a huge or infinite
-// linear value. The overshoot may cover at most half of the distance from the samples' range to
-// the working range's ends: ordinary edges keep their ringing (see uAntiRinging to remove it),
-// an edge beside a highlight cannot run off to infinity.
+// linear value, and beside a large negative sample a small positive weight does the same
+// (issue 25, defect 4: a patch at -1000 gave +FLT_MAX neighbours). The overshoot may reach half
+// the samples' own spread past them, and at most half of the distance to the working range's
+// end: ordinary edges keep their ringing (uAntiRinging removes it), no edge runs off.
 vec3 limitOvershoot(vec3 filtered, vec3 samplesMin, vec3 samplesMax) {
-  vec3 lo = min(samplesMin, mix(samplesMin, vec3(uWorkingRange.x), 0.5));
-  vec3 hi = max(samplesMax, mix(samplesMax, vec3(uWorkingRange.y), 0.5));
+  vec3 allowed = 0.5 * (samplesMax - samplesMin);
+  vec3 lo = samplesMin - min(allowed, max(0.5 * (samplesMin - vec3(uWorkingRange.x)), 0.0));
+  vec3 hi = samplesMax + min(allowed, max(0.5 * (vec3(uWorkingRange.y) - samplesMax), 0.0));
   return clamp(filtered, lo, hi);
+}
+
+// The last guard before the inverse bracket and history: a working value stays within the
+// working range's ends, or within the pixel's own samples where they lie beyond those ends.
+// Whatever a stage did (a colour box's corner in YCoCg lies outside the samples' RGB range),
+// the inverse then never meets a value it maps to infinity.
+vec4 withinWorkingRange(vec4 working, vec3 samplesMin, vec3 samplesMax) {
+  vec3 lo = min(vec3(uWorkingRange.x), samplesMin);
+  vec3 hi = max(vec3(uWorkingRange.y), samplesMax);
+  return vec4(clamp(working.rgb, lo, hi), working.a);
 }
 
 // An output colour the output's type can hold: NaN (from a user bracket) becomes 0, anything

@@ -315,5 +315,5 @@ void main() {
                             : mix(history, filtered, alpha);
     historyWeight = 1.0 - alpha;
   }
-  writeResult(result, samples, historyWeight, reason, motion);
+  writeResult(withinWorkingRange(result, rgbMin, rgbMax), samples, historyWeight, reason, motion);
 }

@@ -210,6 +210,7 @@ void main() {
   gNearest = 1.0 / 0.0;
   gFarthest = 0.0;
   gThinDepth = 1.0 / 0.0;
+  vec3 rgbMin = vec3(1e30), rgbMax = vec3(-1e30);
   float depths[9];
   float movingDepth = 1.0 / 0.0;
   ivec2 movingAt = pixel;  // the nearest moving sample of the 3x3, if any
@@ -221,6 +222,8 @@ void main() {
       RingSample entry = ringSample(n, uTargetLayer);
       vec4 colour = entry.colour;
       filtered += uReconstruction[3 * (dy + 1) + dx + 1] * colour;
+      rgbMin = min(rgbMin, colour.rgb);
+      rgbMax = max(rgbMax, colour.rgb);
       float signedDepth = entry.depth;
       float depth = abs(signedDepth);
       depths[3 * (dy + 1) + dx + 1] = depth;
@@ -242,6 +245,7 @@ void main() {
   }
   addSample(ownSum, 1.0);  // weights already applied
   gWeight += ownWeight - 1.0;
+  filtered.rgb = limitOvershoot(filtered.rgb, rgbMin, rgbMax);
   addSample(filtered, uReconstructionWeight);
 
   // The surfaces the pixel may be looking at: the 3x3's near one and, when it spans two
@@ -372,7 +376,7 @@ void main() {
     }
   }
 
-  vec4 working = gSum / gWeight;
+  vec4 working = withinWorkingRange(gSum / gWeight, rgbMin, rgbMax);
   outColor = finiteOutput(taaFromWorking(working));
   // Rejected: hidden candidates, and the weight of sources left out for their colour.
   float rejected = gHidden + gDisagreeing;

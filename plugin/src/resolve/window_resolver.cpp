@@ -140,7 +140,11 @@ struct WindowResolver::Impl {
     toWorkingLuts = color::OcioGpuResources(gl, bracket.toWorking(), kFirstOcioUnit);
     fromWorkingLuts = color::OcioGpuResources(gl, bracket.fromWorking(), kFirstOcioUnit);
     toWorkingLuts.setUniforms(prepareProgram);
-    for (const gl::Program& p : gatherPrograms) fromWorkingLuts.setUniforms(p);
+    const color::OcioBracket::Range range = bracket.workingRange();
+    for (const gl::Program& p : gatherPrograms) {
+      fromWorkingLuts.setUniforms(p);
+      p.set("uWorkingRange", range.lo, range.hi);  // glsl/finite_range.glsl's limits
+    }
     movingQuery = gl::AnySamplesQuery(gl);
   }
 
