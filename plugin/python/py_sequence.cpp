@@ -34,11 +34,26 @@ std::string framesText(const py::handle& frames) {
   return text;
 }
 
+// A str, bytes or os.PathLike as the bytes the file system sees (os.fsencode): a name that is
+// not UTF-8 (bytes, or a str holding surrogate escapes, as os.listdir gives it) reaches the
+// file as it is.
+bool isPathLike(const py::handle& value) {
+  return py::isinstance<py::str>(value) || py::isinstance<py::bytes>(value) ||
+         py::hasattr(value, "__fspath__");
+}
+std::string fileSystemText(const py::handle& value) {
+  return py::module_::import("os").attr("fsencode")(value).cast<std::string>();
+}
+// Back to Python as os.fsdecode gives it: the file system's bytes, surrogate-escaped.
+py::object fileSystemName(const std::string& text) {
+  return py::module_::import("os").attr("fsdecode")(py::bytes(text));
+}
+
 // taatool's argument list for these keyword arguments, so that the options mean exactly what
 // they mean on the command line (and are checked by the same code).
-std::vector<std::string> commandLine(const std::string& color, const py::kwargs& kwargs,
+std::vector<std::string> commandLine(const py::object& color, const py::kwargs& kwargs,
                                      py::object& progress) {
-  std::vector<std::string> args = {color};
+  std::vector<std::string> args = {fileSystemText(color)};
   for (const auto& [keyHandle, value] : kwargs) {
     const std::string key = keyHandle.cast<std::string>();
     if (key == "progress") {
@@ -57,6 +72,8 @@ std::vector<std::string> commandLine(const std::string& color, const py::kwargs&
       if (value.cast<bool>()) args.push_back(flag);
     } else if (key == "frames") {
       args.insert(args.end(), {flag, framesText(value)});
+    } else if (isPathLike(value)) {
+      args.insert(args.end(), {flag, fileSystemText(value)});
     } else {
       args.insert(args.end(), {flag, py::str(value).cast<std::string>()});
     }
@@ -69,8 +86,8 @@ py::dict reportDict(const FrameReport& report) {
   d["index"] = report.index;
   d["count"] = report.count;
   d["frame"] = report.frame;
-  d["input"] = report.inputPath;
-  d["output"] = report.outputPath;
+  d["input"] = fileSystemName(report.inputPath);
+  d["output"] = fileSystemName(report.outputPath);
   d["history_reset"] = report.historyReset;
   d["size_changed"] = report.sizeChanged;
   d["non_finite_color_values"] = report.nonFiniteColorValues;
@@ -82,7 +99,7 @@ py::dict reportDict(const FrameReport& report) {
 // Thrown through the job when the progress callback raised; the Python error stays set.
 struct CallbackRaised {};
 
-py::list resolveSequence(const std::string& color, const py::kwargs& kwargs) {
+py::list resolveSequence(const py::object& color, const py::kwargs& kwargs) {
   py::object progress = py::none();
   cli::CommandLine cl;
   std::optional<cli::InputReport> inputReport;
@@ -129,10 +146,13 @@ py::list resolveSequence(const std::string& color, const py::kwargs& kwargs) {
     throw py::error_already_set();
   }
   // What changed the result silently, as Python warnings (taatool prints them on stderr).
+  // A file name in a warning may not be UTF-8: its bytes are kept as \xNN escapes. A warning
+  // turned into an error (-W error) raises from warn.
+  const py::object warn = py::module_::import("warnings").attr("warn");
   for (const std::string& warning : inputReport->warnings()) {
-    if (PyErr_WarnEx(PyExc_RuntimeWarning, warning.c_str(), 1) != 0) {
-      throw py::error_already_set();  // warnings turned into errors (-W error)
-    }
+    warn(py::reinterpret_steal<py::object>(PyUnicode_DecodeUTF8(
+             warning.data(), Py_ssize_t(warning.size()), "backslashreplace")),
+         py::handle(PyExc_RuntimeWarning), 1);
   }
   for (const FrameReport& report : done) reports.append(reportDict(report));
   return reports;

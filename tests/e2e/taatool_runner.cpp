@@ -1,14 +1,20 @@
 #include "taatool_runner.h"
 
+#include <fcntl.h>
 #include <gtest/gtest.h>
+#include <spawn.h>
 #include <sys/wait.h>
 
+#include <cerrno>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <sstream>
 
 #include "scenegen/exr_output.h"
 #include "scenegen/scene_library.h"
+
+extern char** environ;
 
 namespace taa::test {
 namespace fs = std::filesystem;
@@ -20,8 +26,6 @@ std::string readText(const fs::path& path) {
   text << in.rdbuf();
   return text.str();
 }
-
-std::string quoted(const std::string& s) { return "'" + s + "'"; }
 
 }  // namespace
 
@@ -44,12 +48,27 @@ ToolRun runTaatool(const std::vector<std::string>& args, const fs::path& scratch
 
 ToolRun runProgram(const std::string& program, const std::vector<std::string>& args,
                    const fs::path& scratch) {
-  std::string command = quoted(program);
-  for (const auto& a : args) command += " " + quoted(a);
+  // Spawned directly, no shell: arguments reach the program as they are, whatever they hold.
   const fs::path out = scratch / "stdout.txt", err = scratch / "stderr.txt";
-  command += " >" + quoted(out.string()) + " 2>" + quoted(err.string()) + " </dev/null";
-  const int status = std::system(command.c_str());
+  posix_spawn_file_actions_t files;
+  posix_spawn_file_actions_init(&files);
+  posix_spawn_file_actions_addopen(&files, 0, "/dev/null", O_RDONLY, 0);
+  posix_spawn_file_actions_addopen(&files, 1, out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_addopen(&files, 2, err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  std::vector<char*> argv = {const_cast<char*>(program.c_str())};
+  for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+  argv.push_back(nullptr);
+  pid_t pid = 0;
+  const int failed = posix_spawnp(&pid, program.c_str(), &files, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&files);
   ToolRun run;
+  if (failed != 0) {
+    run.err = "cannot run " + program + ": " + std::strerror(failed);
+    return run;
+  }
+  int status = 0;
+  while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  }
   run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   run.out = readText(out);
   run.err = readText(err);
