@@ -435,13 +435,18 @@ Conventions (internal: motion in pixels, y down, pointing to the previous frame;
   --depth-nohit V          planar depth at or above V means nothing was hit (default 1e9)
 
 Camera and jitter:
+  (default: each frame's camera and jitter from the color header's camera note, the string
+  attribute Note that taa's Blender add-on writes, where it has one; else the header's
+  worldToCamera/worldToNDC and the --jitter option's Halton(2,3); -v says which)
   --ndc zero-one-y-down|minus-one-one-y-up  NDC of the headers' worldToNDC (default
                            zero-one-y-down: RenderMan's NDC, (0, 0) top left)
   --camera-sidecar FILE    JSON per frame: view and projection (OpenGL, column-major) and
-                           jitter (px, y down); replaces header matrices (docs/ARCHITECTURE.md)
+                           jitter (px, y down); replaces header matrices and the camera
+                           note's (docs/ARCHITECTURE.md)
   --jitter header:ATTR     each frame's jitter from the color header's float[2] attribute ATTR
                            in pixels, y down (e.g. header:taa:jitter)
   --jitter sidecar         each frame's jitter from --camera-sidecar
+                           (--jitter halton|none too: then the camera note's jitter is unused)
 
 @RESOLVE_OPTIONS@
 Sequences and cuts:

@@ -16,16 +16,18 @@ namespace {
 
 using nlohmann::json;
 
+const EntrySource kSidecarSource{"sidecar entry", "the camera sidecar"};
+
 // A column-major 4x4 matrix from 16 numbers.
-glm::dmat4 readMatrix(const json& value, const char* key, const ErrorContext& context) {
+glm::dmat4 readMatrix(const json& value, const char* key, const EntrySource& source,
+                      const ErrorContext& context) {
   if (!value.is_array() || value.size() != 16) {
-    throw Error(std::string("sidecar entry \"") + key + "\" must be an array of 16 numbers",
-                context);
+    throw Error(source.entry + " \"" + key + "\" must be an array of 16 numbers", context);
   }
   double numbers[16];
   for (int i = 0; i < 16; ++i) {
     if (!value[i].is_number()) {
-      throw Error(std::string("sidecar entry \"") + key + "\" holds a non-number", context);
+      throw Error(source.entry + " \"" + key + "\" holds a non-number", context);
     }
     numbers[i] = value[i].get<double>();
   }
@@ -40,17 +42,18 @@ float toFloat(double value) {
                      : -std::numeric_limits<float>::infinity();
 }
 
-SidecarFrame readEntry(const json& entry, const ErrorContext& context) {
-  if (!entry.is_object()) throw Error("sidecar frame entry must be an object", context);
+SidecarFrame readEntry(const json& entry, const EntrySource& source,
+                       const ErrorContext& context) {
+  if (!entry.is_object()) throw Error(source.entry + " must be an object", context);
   SidecarFrame frame;
   const bool hasView = entry.contains("view"), hasProjection = entry.contains("projection");
   if (hasView != hasProjection) {
-    throw Error("sidecar frame entry needs both \"view\" and \"projection\" (or neither)",
+    throw Error(source.entry + " needs both \"view\" and \"projection\" (or neither)",
                 context);
   }
   if (hasView) {
-    const glm::dmat4 view = readMatrix(entry["view"], "view", context);
-    const glm::dmat4 projection = readMatrix(entry["projection"], "projection", context);
+    const glm::dmat4 view = readMatrix(entry["view"], "view", source, context);
+    const glm::dmat4 projection = readMatrix(entry["projection"], "projection", source, context);
     // OpenGL's eye space looks down -z; taa's camera space looks down +z (EXR convention).
     glm::dmat4 flipZ(1.0);
     flipZ[2][2] = -1.0;
@@ -59,10 +62,10 @@ SidecarFrame readEntry(const json& entry, const ErrorContext& context) {
   if (entry.contains("jitter")) {
     const json& j = entry["jitter"];
     if (!j.is_array() || j.size() != 2 || !j[0].is_number() || !j[1].is_number()) {
-      throw Error("sidecar entry \"jitter\" must be [jx, jy] in pixels", context);
+      throw Error(source.entry + " \"jitter\" must be [jx, jy] in pixels", context);
     }
     const glm::vec2 jitter(toFloat(j[0].get<double>()), toFloat(j[1].get<double>()));
-    frame.jitter = checkedJitter(jitter, "the camera sidecar", context);
+    frame.jitter = checkedJitter(jitter, source.whole, context);
   }
   return frame;
 }
@@ -74,6 +77,17 @@ int parseFrameKey(const std::string& key, const std::string& path) {
 }
 
 }  // namespace
+
+SidecarFrame parseCameraEntry(const std::string& text, const EntrySource& source,
+                              const ErrorContext& context) {
+  json entry;
+  try {
+    entry = json::parse(text);
+  } catch (const json::exception& e) {
+    throw Error(source.whole + " is not valid JSON: " + e.what(), context);
+  }
+  return readEntry(entry, source, context);
+}
 
 CameraSidecar CameraSidecar::load(const std::string& path) {
   std::ifstream in(path);
@@ -91,7 +105,7 @@ CameraSidecar CameraSidecar::load(const std::string& path) {
   sidecar.path_ = path;
   for (const auto& [key, entry] : document["frames"].items()) {
     const int frame = parseFrameKey(key, path);
-    sidecar.frames_[frame] = readEntry(entry, {path, frame, ""});
+    sidecar.frames_[frame] = readEntry(entry, kSidecarSource, {path, frame, ""});
   }
   return sidecar;
 }

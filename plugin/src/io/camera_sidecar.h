@@ -16,6 +16,7 @@
 #include <string>
 
 #include "resolve/camera.h"
+#include "taa/error.h"
 
 namespace taa::io {
 
@@ -23,6 +24,18 @@ struct SidecarFrame {
   std::optional<FrameCamera> camera;  // converted: +z-forward camera space, worldToNdc = P V
   std::optional<glm::vec2> jitter;
 };
+
+// Where an entry comes from, for its messages: `entry` names it ("sidecar entry"), `whole` the
+// text that holds it ("the camera sidecar").
+struct EntrySource {
+  std::string entry, whole;
+};
+
+// One entry as JSON text (an object with "view", "projection", "jitter" as above), checked and
+// converted as the sidecar's entries are: the camera note in an EXR header (io/camera_note.h)
+// holds one. Throws taa::Error with `context` for malformed JSON or a malformed entry.
+SidecarFrame parseCameraEntry(const std::string& text, const EntrySource& source,
+                              const ErrorContext& context);
 
 class CameraSidecar {
  public:

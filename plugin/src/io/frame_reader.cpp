@@ -16,6 +16,7 @@
 #include <type_traits>
 
 #include "io/aov_conversion.h"
+#include "io/camera_note.h"
 #include "io/part_channels.h"
 #include "io/sequence_pattern.h"
 #include "taa/error.h"
@@ -155,6 +156,21 @@ std::vector<int> channelIndices(const OpenExr& file, int part,
   return indices;
 }
 
+// Colour, depth and motion are half or float: an integer channel (an ID or count pass named by
+// mistake) would come back scaled by OIIO into [0, 1] without a word.
+void requireHalfOrFloat(const OpenExr& file, int part, const std::vector<std::string>& names,
+                        const std::string& aovName, int frame) {
+  const OIIO::ImageSpec& spec = file.parts[std::size_t(part)];
+  for (int c : channelIndices(file, part, names, aovName, frame)) {
+    const OIIO::TypeDesc type = spec.channelformat(c);
+    if (type == OIIO::TypeHalf || type == OIIO::TypeFloat) continue;
+    throw Error("the " + aovName + " channel " + spec.channelnames[std::size_t(c)] + " is " +
+                    type.c_str() + ", not half or float: an integer pass (IDs, counts) is no " +
+                    aovName + "; name another channel or pass it through (--passthrough)",
+                {file.path, frame, spec.channelnames[std::size_t(c)]});
+  }
+}
+
 // A frame's pixel reads, gathered by file and part before any is made, so that a part several
 // AOVs share (a multilayer file's colour, depth and vectors) is decoded once.
 class PartReads {
@@ -291,6 +307,7 @@ int addColorRead(PartReads& reads, OpenExr& file, int part, const AovSource& sou
   if (names.size() == 4 && !hasChannels(spec, {names[3]})) names.pop_back();
   const SampleType type = colorSampleType(spec, names);
   rgba = TypedImage(spec.width, spec.height, 4, type);
+  requireHalfOrFloat(file, part, names, "color", frame);
   reads.add(file, part, names, "color", frame,
             type == SampleType::Half ? OIIO::TypeHalf : OIIO::TypeFloat, rgba.data(), 4);
   return int(names.size());
@@ -331,18 +348,26 @@ RasterWindow rasterWindow(const OIIO::ImageSpec& spec) {
           spec.full_height > 0 ? spec.full_height : spec.height};
 }
 
-// The sidecar's matrices when it has them for this frame, else the header's.
+// The sidecar's matrices when it has them for this frame, else the header's camera note's,
+// else the header's worldToCamera/worldToNDC. The note's jitter is kept either way.
 void chooseCamera(FrameData& data, const CameraInputs& cameras) {
-  if (cameras.sidecar) {
-    const SidecarFrame& entry = cameras.sidecar->frame(data.frame);
-    if (entry.camera) {
-      data.camera = entry.camera;
-      data.ndc = CameraSidecar::kNdc;
-      return;
-    }
+  std::optional<SidecarFrame> note;
+  if (cameras.readNote) note = readCameraNote(data.colorSpec, data.colorPath, data.frame);
+  if (note) data.noteJitter = note->jitter;
+  const SidecarFrame* entry = cameras.sidecar ? &cameras.sidecar->frame(data.frame) : nullptr;
+  if (entry && entry->camera) {
+    data.camera = entry->camera;
+    data.cameraOrigin = CameraOrigin::Sidecar;
+    data.ndc = CameraSidecar::kNdc;
+  } else if (note && note->camera) {
+    data.camera = note->camera;
+    data.cameraOrigin = CameraOrigin::Note;
+    data.ndc = CameraSidecar::kNdc;  // the note holds a sidecar entry: OpenGL's matrices
+  } else {
+    data.camera = headerCamera(data.colorSpec, data.colorPath, data.frame);
+    data.cameraOrigin = data.camera ? CameraOrigin::HeaderMatrices : CameraOrigin::None;
+    data.ndc = cameras.headerNdc;
   }
-  data.camera = headerCamera(data.colorSpec, data.colorPath, data.frame);
-  data.ndc = cameras.headerNdc;
 }
 
 PixelRay pixelRayFor(const FrameData& data, const DepthConvention& convention,
@@ -411,6 +436,7 @@ FrameData readFrame(const AovLayout& layout, int frame, const CameraInputs& came
     const int part = findPart(file, *layout.depth, "depth", frame);
     requireSameWindow(file, part, data.colorSpec, data.colorPath, "depth", frame);
     data.depth = Image(data.colorSpec.width, data.colorSpec.height, 1);
+    requireHalfOrFloat(file, part, layout.depth->channels, "depth", frame);
     reads.add(file, part, layout.depth->channels, "depth", frame, OIIO::TypeFloat,
               data.depth.pixels.data(), 1);
     depthFile = &file;
@@ -420,6 +446,7 @@ FrameData readFrame(const AovLayout& layout, int frame, const CameraInputs& came
     const int part = findPart(file, *layout.motion, "motion", frame);
     requireSameWindow(file, part, data.colorSpec, data.colorPath, "motion", frame);
     data.motion = Image(data.colorSpec.width, data.colorSpec.height, 2);
+    requireHalfOrFloat(file, part, layout.motion->channels, "motion", frame);
     reads.add(file, part, layout.motion->channels, "motion", frame, OIIO::TypeFloat,
               data.motion.pixels.data(), 2);
     data.motionPath = file.path;

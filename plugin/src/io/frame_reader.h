@@ -14,6 +14,9 @@
 
 namespace taa::io {
 
+// Where a frame's camera matrices came from.
+enum class CameraOrigin { None, Sidecar, Note, HeaderMatrices };
+
 struct FrameData {
   int frame = 0;
   TypedImage color;  // RGBA, premultiplied as stored; half when the file's colour channels are
@@ -27,9 +30,11 @@ struct FrameData {
                                   // clamps them)
   int nonFiniteMotionValues = 0;  // motion values NaN/Inf (before or after conversion), set to 0
   std::string motionPath;         // the file motion came from; empty without motion
-  std::optional<FrameCamera> camera;  // from the sidecar, else the color header's
-                                      // worldToCamera + worldToNDC
+  std::optional<FrameCamera> camera;  // from the sidecar, else the color header's camera note,
+                                      // else its worldToCamera + worldToNDC
+  CameraOrigin cameraOrigin = CameraOrigin::None;  // which of those `camera` came from
   NdcConvention ndc = NdcConvention::ZeroOneYDown;  // the convention of camera->worldToNdc
+  std::optional<glm::vec2> noteJitter;  // the color header's camera note's jitter, if it has one
   RasterWindow window;            // the data window's place in the display window
   OIIO::ImageSpec colorSpec;      // the color part's header: windows and metadata for output
   std::string colorPath;
@@ -45,6 +50,10 @@ inline constexpr int kMaxImageSide = 16384;
 struct CameraInputs {
   NdcConvention headerNdc = NdcConvention::ZeroOneYDown;  // of the headers' worldToNDC
   const CameraSidecar* sidecar = nullptr;  // its entries with matrices replace the header's
+  // Read the color header's camera note (io/camera_note.h): its matrices come after the
+  // sidecar's and before worldToCamera/worldToNDC, its jitter goes to FrameData::noteJitter.
+  // Off when the caller takes both camera and jitter from elsewhere (a bad note is then no error).
+  bool readNote = true;
 };
 
 // Reads frame `frame`. All images cover the color part's data window. An AOV with an empty
@@ -60,7 +69,7 @@ struct CameraInputs {
 // (e.g. a PNG, whatever its name), truncated or corrupt file, a missing part (listing those
 // available), a missing channel (listing those available), a wrong channel count for an AOV,
 // depth/motion windows that differ from color's (stating both), radial depth without a camera,
-// a data window beyond kMaxImageSide.
+// a data window beyond kMaxImageSide, a malformed camera note (channel "Note").
 FrameData readFrame(const AovLayout& layout, int frame, const CameraInputs& cameras = {});
 
 

@@ -75,6 +75,8 @@ io::ExtraChannels passthroughWithout(const io::ExtraChannels& all,
 glm::vec2 jitterOf(const SequenceJob& job, const io::FrameData& data,
                    const io::CameraSidecar* sidecar) {
   switch (job.jitterSource) {
+    case JobJitterSource::Auto:
+      return data.noteJitter ? *data.noteJitter : frameJitter(data.frame, job.resolve.jitter);
     case JobJitterSource::Options: return frameJitter(data.frame, job.resolve.jitter);
     case JobJitterSource::Sidecar: return sidecar->jitter(data.frame);
     case JobJitterSource::HeaderAttribute: break;
@@ -89,6 +91,31 @@ glm::vec2 jitterOf(const SequenceJob& job, const io::FrameData& data,
   const float* xy = static_cast<const float*>(value->data());
   return checkedJitter(glm::vec2(xy[0], xy[1]), "the header attribute " + job.jitterAttribute,
                        {data.colorPath, data.frame, ""});
+}
+
+// Where a frame's camera and jitter came from, for verbose output.
+std::string cameraSourceText(const SequenceJob& job, const io::FrameData& data) {
+  std::string camera;
+  switch (data.cameraOrigin) {
+    case io::CameraOrigin::Sidecar: camera = "the camera sidecar"; break;
+    case io::CameraOrigin::Note: camera = "the color header's camera note (Note)"; break;
+    case io::CameraOrigin::HeaderMatrices: camera = "the color header's worldToCamera/worldToNDC";
+      break;
+    case io::CameraOrigin::None: camera = "nowhere (no matrices: motion vectors only)"; break;
+  }
+  std::string jitter;
+  const bool halton = job.resolve.jitter.source == JitterSource::Halton;
+  switch (job.jitterSource) {
+    case JobJitterSource::Auto:
+      jitter = data.noteJitter ? "the color header's camera note"
+                               : halton ? "Halton(2,3) (no camera note)" : "none (no camera note)";
+      break;
+    case JobJitterSource::Options: jitter = halton ? "Halton(2,3)" : "none"; break;
+    case JobJitterSource::HeaderAttribute: jitter = "the header attribute " + job.jitterAttribute;
+      break;
+    case JobJitterSource::Sidecar: jitter = "the camera sidecar"; break;
+  }
+  return "camera from " + camera + ", jitter from " + jitter;
 }
 
 }  // namespace
@@ -226,7 +253,9 @@ struct JobRun {
 
   JobRun(const SequenceJob& j, const JobCallbacks& c) : job(j), callbacks(c) {
     if (!job.cameraSidecar.empty()) sidecar = io::CameraSidecar::load(job.cameraSidecar);
-    cameras = {job.ndc, sidecar ? &*sidecar : nullptr};
+    // The note is read unless both the camera and the jitter are given explicitly.
+    const bool jitterGiven = job.jitterSource != JobJitterSource::Auto;
+    cameras = {job.ndc, sidecar ? &*sidecar : nullptr, !(sidecar && jitterGiven)};
     write = job.write;
     write.rgbaNames = outputChannelNames(job);
     options = outputOptionsAttribute(job);
@@ -235,6 +264,7 @@ struct JobRun {
   io::FrameData read(int frame) const { return io::readFrame(job.layout, frame, cameras); }
 
   ResolveInput inputOf(const io::FrameData& data) const {
+    tellCameraSource(data);
     ResolveInput input;
     input.color = &data.color;
     input.depth = data.depth.empty() ? nullptr : &data.depth;
@@ -244,6 +274,17 @@ struct JobRun {
     input.window = data.window;
     input.ndc = data.ndc;
     return input;
+  }
+
+  // Verbose output says where the camera and jitter came from: for the first frame, then for
+  // each frame where that changes. Called in frame order, on the GL thread.
+  mutable std::string lastCameraSource;
+  void tellCameraSource(const io::FrameData& data) const {
+    if (!callbacks.detail) return;
+    std::string source = cameraSourceText(job, data);
+    if (source == lastCameraSource) return;
+    callbacks.detail("frame " + std::to_string(data.frame) + ": " + source);
+    lastCameraSource = std::move(source);
   }
 
   // Errors of the resolve name the frame's colour file.

@@ -18,10 +18,11 @@
 
 namespace taa {
 
-// Where each frame's jitter comes from. Options: the resolve options' JitterOptions (Halton or
-// none); HeaderAttribute: a float[2] attribute of the color header (pixels, x right, y down);
-// Sidecar: the camera sidecar's "jitter" entry.
-enum class JobJitterSource { Options, HeaderAttribute, Sidecar };
+// Where each frame's jitter comes from. Auto: the color header's camera note (io/camera_note.h)
+// where the frame has one, else the resolve options'; Options: the resolve options'
+// JitterOptions (Halton or none); HeaderAttribute: a float[2] attribute of the color header
+// (pixels, x right, y down); Sidecar: the camera sidecar's "jitter" entry.
+enum class JobJitterSource { Auto, Options, HeaderAttribute, Sidecar };
 
 struct SequenceJob {
   io::AovLayout layout;        // where color, depth and motion come from
@@ -40,7 +41,7 @@ struct SequenceJob {
   std::set<int> prerollFrames;
   bool debugLayers = false;    // write the resolver's diagnostics as extra layers
   NdcConvention ndc = NdcConvention::ZeroOneYDown;  // of the headers' worldToNDC
-  JobJitterSource jitterSource = JobJitterSource::Options;
+  JobJitterSource jitterSource = JobJitterSource::Auto;
   std::string jitterAttribute = "taa:jitter";  // for HeaderAttribute
   std::string cameraSidecar;   // JSON file (io/camera_sidecar.h); empty: none
   // Output color channel names (4). Empty: the color input's names (a missing alpha gets the
