@@ -10,6 +10,9 @@
         (the settings the add-on may touch).
     blender -b DIR/scene.blend ... -P addon_scene.py -- --snapshot FILE
         writes those settings as they are now (after the add-on's render) to FILE.
+    blender -b DIR/scene.blend ... -P addon_scene.py -- --png-still DIR
+        the scene set to write 8-bit PNGs, frame 3 rendered as a still through the add-on's
+        operator into DIR/still/frame.exr; the settings before and after into DIR/still/.
 """
 import json
 import os
@@ -111,10 +114,24 @@ def build(folder):
     bpy.ops.wm.save_as_mainfile(filepath=os.path.join(folder, 'scene.blend'))
 
 
+def png_still(folder):
+    scene = bpy.context.scene
+    scene.render.image_settings.file_format = 'PNG'
+    scene.render.image_settings.color_depth = '8'
+    scene.render.filepath = os.path.join(folder, 'still', 'frame')
+    scene.frame_set(3)
+    write_json(os.path.join(folder, 'still', 'before.json'), snapshot(scene))
+    bpy.ops.taa.render(animation=False)
+    write_json(os.path.join(folder, 'still', 'after.json'), snapshot(scene))
+
+
 def main():
     args = sys.argv[sys.argv.index('--') + 1:]
     if args[0] == '--build':
         build(args[1])
+    elif args[0] == '--png-still':
+        os.makedirs(os.path.join(args[1], 'still'), exist_ok=True)
+        png_still(args[1])
     elif args[0] == '--snapshot':
         write_json(args[1], snapshot(bpy.context.scene))
     else:

@@ -192,6 +192,31 @@ TEST(BlenderAddon, WhatTheResolveNeedsIsSetWithAMessageAndPutBackAfterTheRender)
   EXPECT_GT(largest, 1.0f) << "the camera moves by pixels a frame";
 }
 
+// Issue 22's "multilayer EXR, half colour, float depth and vectors", from a scene that wrote
+// 8-bit PNGs, through a still render (F12 in the UI).
+TEST(BlenderAddon, AStillOfAPngSceneGetsHalfColourFloatDataItsNoteAndThePngBack) {
+  const fs::path folder = rendered().folder;
+  const ToolRun still = blender(folder, "still_log",
+      {"-b", (folder / "scene.blend").string(), "-noaudio", "--python-exit-code", "1", "-P",
+       TAA_ADDON_SCENE_SCRIPT, "--", "--png-still", folder.string()});
+  ASSERT_EQ(still.exitCode, 0) << still.out;
+  EXPECT_NE(still.out.find("Colour depth: '8' -> '16'"), std::string::npos) << still.out;
+  EXPECT_EQ(still.out.find("could not put back"), std::string::npos) << still.out;
+  const std::string path = (folder / "still" / "frame.exr").string();
+  auto input = OIIO::ImageInput::open(path);
+  ASSERT_TRUE(input) << path;
+  const OIIO::ImageSpec& spec = input->spec();
+  for (int c = 0; c < spec.nchannels; ++c) {
+    const std::string& name = spec.channelnames[std::size_t(c)];
+    const bool colour = name.find(".Combined.") != std::string::npos;
+    EXPECT_EQ(spec.channelformat(c), colour ? OIIO::TypeHalf : OIIO::TypeFloat) << name;
+  }
+  const io::FrameData frame = io::readFrame(io::cyclesLayout(path), 3);
+  EXPECT_EQ(frame.cameraOrigin, io::CameraOrigin::Note);
+  EXPECT_EQ(frame.noteJitter, frameJitter(3, JitterOptions{}));
+  EXPECT_EQ(readText(folder / "still" / "after.json"), readText(folder / "still" / "before.json"));
+}
+
 std::vector<float> readPixels(const std::string& path) {
   auto input = OIIO::ImageInput::open(path);
   EXPECT_TRUE(input) << path;
@@ -207,8 +232,8 @@ TEST(BlenderAddon, TaatoolWithNoFlagsEqualsTheSidecarRunBitForBit) {
   fs::create_directories(folder / "header");
   fs::create_directories(folder / "sidecar");
   const ToolRun header = runTaatool(
-      {"--preset", "cycles", rendered().pattern(), "-o", (folder / "header" / "o.####.exr").string(),
-       "-v"},
+      {"--preset", "cycles", rendered().pattern(), "-o",
+       (folder / "header" / "o.####.exr").string(), "-v"},
       folder / "header");
   ASSERT_EQ(header.exitCode, 0) << header.err;
   const std::string said = header.out + header.err;

@@ -55,7 +55,7 @@ class Session:
     def end(self, scene):
         for data, (x, y) in self.base_shifts.items():
             data.shift_x, data.shift_y = x, y
-        requirements.restore(scene, self.changes)
+        requirements.restore(scene, self.changes, log)
 
 
 _session = None

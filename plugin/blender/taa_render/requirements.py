@@ -16,15 +16,19 @@ class Setting:
     def set(self, scene, value):
         setattr(self.owner(scene), self.name, value)
 
-    def wanted_value(self, scene):
-        current = self.get(scene)
-        return self.wanted(current) if callable(self.wanted) else self.wanted
+    def wanted_value(self, scene, before=None):
+        """What taa sets; a function of the value the scene had before the render (`before`,
+        else the current one)."""
+        if callable(self.wanted):
+            return self.wanted(self.get(scene) if before is None else before)
+        return self.wanted
 
 
-def _exr_depth(current):
-    # Half colour unless the scene already asks for float; Cycles writes Depth and Vector as
-    # float either way (measured on Blender 3.4.1).
-    return current if current in ('16', '32') else '16'
+def _exr_depth(before):
+    # Half colour unless the scene asked for float; Cycles writes Depth and Vector as float
+    # either way (measured on Blender 3.4.1). Blender itself picks 32 when a PNG's 8 bits
+    # become an EXR's, so the choice is made from the value before the render.
+    return before if before in ('16', '32') else '16'
 
 
 def settings(scene):
@@ -103,22 +107,27 @@ def describe(value):
 def apply(scene, log):
     """Sets every setting to what taa needs; returns [(setting, previous value)] for restore.
     Each change is logged with its reason."""
-    changes = []
-    for setting in settings(scene):
-        current = setting.get(scene)
-        wanted = setting.wanted_value(scene)
-        changes.append((setting, current))
-        if wanted is None or current == wanted:
+    # Every value is taken before anything is set: setting one may change another (the file
+    # format changes the colour depth).
+    changes = [(setting, setting.get(scene)) for setting in settings(scene)]
+    for setting, before in changes:
+        wanted = setting.wanted_value(scene, before)
+        if wanted is None or setting.get(scene) == wanted:
             continue
         setting.set(scene, wanted)
-        log('%s: %s -> %s (%s)' % (setting.label, describe(current), describe(wanted),
-                                    setting.why))
+        if wanted != before:
+            log('%s: %s -> %s (%s)' % (setting.label, describe(before), describe(wanted),
+                                        setting.why))
     return changes
 
 
-def restore(scene, changes):
+def restore(scene, changes, log):
     """Puts back what apply changed, in the same order (the file format before its colour
-    depth: PNG's 8 bits are no EXR choice)."""
+    depth: PNG's 8 bits are no EXR choice). One setting that cannot be put back does not keep
+    the others from it."""
     for setting, previous in changes:
-        if setting.get(scene) != previous:
-            setting.set(scene, previous)
+        try:
+            if setting.get(scene) != previous:
+                setting.set(scene, previous)
+        except (TypeError, ValueError, AttributeError, KeyError) as error:
+            log('could not put back %s (%s): %s' % (setting.label, describe(previous), error))
