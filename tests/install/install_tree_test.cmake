@@ -32,7 +32,8 @@ unset(ENV{DESTDIR})
 set(bundle ${stage}${OFX_PLUGIN_DIR}/TAAResolve.ofx.bundle/Contents/${OFX_ARCHITECTURE}/TAAResolve.ofx)
 set(binaries ${root}/bin/taatool ${root}/bin/taa-farm ${root}/${LIB_DIR}/libtaa.so.0 ${bundle})
 foreach(path ${binaries} ${root}/include/taa/taa.h ${root}/${LIB_DIR}/libtaa.so
-             ${root}/${LIB_DIR}/cmake/taa/taaConfig.cmake)
+             ${root}/${LIB_DIR}/cmake/taa/taaConfig.cmake
+             ${root}/share/taa/blender/taa_blender_addon.zip)
   require_file(${path})
 endforeach()
 
