@@ -5,14 +5,14 @@
 # input in build-asan/fuzz/crashes/<target>/: make it a regression test in the suite that owns
 # the code, and add it to the corpus.
 #   FUZZ_SECONDS   seconds per target (default 60)
-#   FUZZ_TARGETS   targets to run (default: all five)
+#   FUZZ_TARGETS   targets to run (default: all six)
 #   FUZZ_JOBS      targets run side by side (default: the number of cores)
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${TAA_ASAN_BUILD_DIR:-$root/build-asan}"
 seconds="${FUZZ_SECONDS:-60}"
 targets=(${FUZZ_TARGETS:-fuzz_frame_reader fuzz_sequence_pattern fuzz_frame_range
-         fuzz_camera_sidecar fuzz_capi_parameters})
+         fuzz_camera_sidecar fuzz_capi_parameters fuzz_farm_script})
 jobs="${FUZZ_JOBS:-$(nproc)}"
 bash "$root/scripts/install-deps.sh"
 source "$root/scripts/sanitizers/environment.sh"

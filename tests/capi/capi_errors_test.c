@@ -128,6 +128,14 @@ static void test_buffers(taa_node* node) {
   CHECK(contains(taa_node_last_error(node), "color buffer must have 3 or 4 channels, has 2"),
         "message: %s", taa_node_last_error(node));
 
+  /* Issue 25: sizes were allocated for before any limit was checked. */
+  taa_buffer huge = float_buffer(color_data, 100000, 100000, 4);
+  frame = frame_with(&huge, NULL, NULL);
+  CHECK(taa_node_push_frame(node, &frame) == TAA_ERROR_INVALID_ARGUMENT, "100000x100000 color");
+  CHECK(contains(taa_node_last_error(node), "color buffer is 100000x100000: at most 16384 "
+                                            "pixels a side"),
+        "message: %s", taa_node_last_error(node));
+
   taa_buffer short_rows = color;
   short_rows.row_stride_bytes = W * 4 * 4 - 4;
   frame = frame_with(&short_rows, NULL, NULL);

@@ -86,6 +86,32 @@ TEST_F(InputPolicyTest, AGapInTheSequenceIsAnErrorUnlessSkipMissing) {
                          (in_ / "beauty.0002.exr").string(), "frame 2"});
 }
 
+// Issue 25: --skip-missing did nothing with --frames; the missing frame was an error.
+TEST_F(InputPolicyTest, SkipMissingWorksWithFrames) {
+  fs::remove(in_ / "beauty.0004.exr");
+  test::expectToolError(run({"--frames", "2-5"}), {(in_ / "beauty.0004.exr").string()});
+  const ToolRun skipped = run({"--frames", "2-5", "--skip-missing"});
+  ASSERT_EQ(skipped.exitCode, 0) << skipped.err;
+  for (int frame : {2, 3, 5}) EXPECT_TRUE(written(frame)) << frame;
+  EXPECT_FALSE(written(4));
+  EXPECT_FALSE(written(1));
+  EXPECT_TRUE(contains(skipped.err, "skipped 1 missing frame (4)")) << skipped.err;
+  test::expectToolError(run({"--frames", "4", "--skip-missing"}), {"none of the frames 4 exists"});
+}
+
+// Issue 25: a dangling link and a loop of links were reported as "missing input frame".
+TEST_F(InputPolicyTest, ABrokenLinkIsNamedAsSuch) {
+  fs::remove(in_ / "depth.0003.exr");
+  fs::create_symlink(in_ / "gone.exr", in_ / "depth.0003.exr");
+  test::expectToolError(run({}), {"input frame is a symbolic link to " +
+                                      (in_ / "gone.exr").string() + ", which does not exist",
+                                  (in_ / "depth.0003.exr").string(), "frame 3"});
+  fs::remove(in_ / "depth.0003.exr");
+  fs::create_symlink(in_ / "depth.0003.exr", in_ / "depth.0003.exr");
+  test::expectToolError(run({}), {"input frame is a loop of symbolic links",
+                                  (in_ / "depth.0003.exr").string()});
+}
+
 // Defect 6: --frames 5-1 ran backwards, history reset on every frame, exit 0.
 TEST_F(InputPolicyTest, DescendingFramesAreAnError) {
   test::expectToolError(run({"--frames", "5-1"}), {"frames must ascend: 4 follows 5"});

@@ -208,7 +208,7 @@ TEST(SbatchDirectives, ALineBreakIsRefusedNamingWhereItCameFrom) {
   slurm.logDir = "/logs/%j";
   EXPECT_NE(usageErrorOfScript(task, slurm).find("'%'"), std::string::npos);
   slurm = {};
-  for (const std::string bad : {"qos=high", "--", "-", "--q os=x", "-pp", "--$(x)=1"}) {
+  for (const std::string bad : {"qos=high", "--", "-", "--q os=x", "-5", "--$(x)=1"}) {
     slurm.extra = {bad};
     EXPECT_NE(usageErrorOfScript(task, slurm).find("expected one sbatch option"),
               std::string::npos)
@@ -254,13 +254,13 @@ TEST(SbatchDirectives, PropertyAnyValueComesBackExactlyOrIsRefused) {
     ++submitted;
     const testing::ParsedScript parsed = testing::parseBatchScript(script);
     ASSERT_EQ(parsed.error, "") << script;
-    EXPECT_EQ(parsed.sbatchWords,
-              (std::vector<std::string>{"--job-name=" + slurm.jobName, "--array=0-11",
-                                        "--output=" + slurm.logDir + "/taa-farm-%A_%a.log",
-                                        "--open-mode=append", "--requeue",
-                                        "--partition=" + slurm.partition,
-                                        "--comment=" + slurm.extra[0]}))
-        << script;
+    std::vector<std::string> sbatchExpected = {
+        "--job-name=" + (slurm.jobName.empty() ? std::string("taa-farm") : slurm.jobName),
+        "--array=0-11", "--output=" + slurm.logDir + "/taa-farm-%A_%a.log",
+        "--open-mode=append", "--requeue"};
+    if (!slurm.partition.empty()) sbatchExpected.push_back("--partition=" + slurm.partition);
+    sbatchExpected.push_back(slurm.extra[0]);
+    EXPECT_EQ(parsed.sbatchWords, sbatchExpected) << script;
     std::vector<std::string> expected = {"cd", "--", task.workingFolder, "exec", task.farmPath,
                                          "run", "--chunk", "20", "--preroll", "16"};
     expected.insert(expected.end(), task.taatoolArgs.begin(), task.taatoolArgs.end());

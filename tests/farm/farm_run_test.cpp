@@ -381,8 +381,9 @@ TEST_F(FarmRunTest, SubmitDryRunPrintsTheArrayScript) {
   const ToolRun run = runProgram(TAA_FARM_PATH, args, dir_);
   ASSERT_EQ(run.exitCode, 0) << run.err;
   for (const std::string& line : std::vector<std::string>{
-           "#SBATCH --array=0-2\n", "#SBATCH --partition=comp\n", "#SBATCH --mem=2G\n",
-        "#SBATCH --output=" + (dir_ / "logs").string() + "/taa-farm-%A_%a.log\n",
+           "#SBATCH --array=\"0-2\"\n", "#SBATCH --partition=\"comp\"\n",
+           "#SBATCH --mem=\"2G\"\n",
+           "#SBATCH --output=\"" + (dir_ / "logs").string() + "/taa-farm-%A_%a.log\"\n",
         "exec " + std::string(TAA_FARM_PATH) + " run --chunk 4 " +
             (in / "beauty.####.exr").string()}) {
     EXPECT_NE(run.out.find(line), std::string::npos) << line << " in\n" << run.out;

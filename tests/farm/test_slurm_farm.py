@@ -339,6 +339,15 @@ def test_submitting_from_a_folder_with_a_space_or_a_line_break(cluster, referenc
         os.makedirs(folder)
         out = os.path.join(folder, "out")
         name = 'it\'s "my" #1 hetjob'
+        # The script as written: bash finds no syntax error, sbatch's own parser takes it.
+        dry = subprocess.run([FARM, "submit", "--chunk", str(CHUNK), "--job-name", name,
+                              "--dry-run", *shot_args(out), "--mode", "window"],
+                             capture_output=True, text=True, env=env, cwd=folder)
+        assert dry.returncode == 0, dry.stderr
+        assert subprocess.run(["bash", "-n"], input=dry.stdout, text=True).returncode == 0
+        test_only = subprocess.run(["sbatch", "--test-only"], input=dry.stdout, text=True,
+                                   capture_output=True, env=env, cwd=folder)
+        assert test_only.returncode == 0, test_only.stderr
         result = subprocess.run([FARM, "submit", "--chunk", str(CHUNK), "--job-name", name,
                                  *shot_args(out), "--mode", "window"],
                                 capture_output=True, text=True, env=env, cwd=folder)

@@ -84,6 +84,13 @@ TEST(CameraSidecar, UnreadableOrMalformedFilesAreErrorsNamingTheFile) {
       // doubles that overflow) made the frame +Inf.
       {R"({"frames": {"3": {"jitter": [1e39, 0]}}})", "jitter (inf, 0) from the camera sidecar is not a finite"},
       {R"({"frames": {"3": {"jitter": [0, -3.5e38]}}})", "not a finite number of pixels"},
+      // Issue 25: 1e38 (finite) and 1e300 matrix entries were taken.
+      {R"({"frames": {"3": {"jitter": [1e38, 0]}}})", "more than 1 pixel from the pixel centre"},
+      {R"({"frames": {"3": {"view": [1e300,0,0,0, 0,1,0,0, 0,0,1,0, 0,0,0,1],
+                              "projection": [1,0,0,0, 0,1,0,0, 0,0,1,0, 0,0,0,1]}}})",
+       "\"view\" holds 1000000"},
+      {"{\"frames\": " + std::string(100000, '[') + std::string(100000, ']') + "}",
+       "the camera sidecar nests deeper than 16 levels"},
   };
   for (const auto& [text, message] : bad) {
     const std::string path = folder + "/bad.json";

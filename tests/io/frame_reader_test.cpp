@@ -339,6 +339,28 @@ TEST(ReadFrame, KeepsTheColorHeader) {
   EXPECT_EQ(data.color.height(), 3);
 }
 
+// Issue 25: a UINT channel asked for as colour came back divided by 2^32 - 1, silently.
+TEST(ReadFrameErrors, AnIntegerColourOrDepthChannelIsRefusedNamingIt) {
+  const std::string folder = scratchFolder();
+  OIIO::ImageSpec spec = makeSpec(4, 3, {"R", "G", "B", "A", "id"});
+  spec.channelformats = {OIIO::TypeHalf, OIIO::TypeHalf, OIIO::TypeHalf, OIIO::TypeHalf,
+                         OIIO::TypeUInt};
+  writeImage(folder + "/c.exr", spec, std::vector<float>(4 * 3 * 5, 7.0f));
+  AovLayout layout;
+  layout.color = {folder + "/c.exr", {"R", "G", "id", "A"}};
+  Error error = errorOf([&] { readFrame(layout, 1); });
+  EXPECT_EQ(error.context().channel, "id");
+  EXPECT_TRUE(contains(error.what(), "the color channel id is uint, not half or float"))
+      << error.what();
+  layout.color = {folder + "/c.exr", {"R", "G", "B", "A"}};
+  layout.depth = AovSource{folder + "/c.exr", {"id"}};
+  error = errorOf([&] { readFrame(layout, 1); });
+  EXPECT_TRUE(contains(error.what(), "the depth channel id is uint")) << error.what();
+  layout.depth.reset();
+  layout.passthrough = {"id"};  // passed through: kept
+  EXPECT_NO_THROW(readFrame(layout, 1));
+}
+
 TEST(ReadFrameErrors, MissingColorFrameNamesPathAndFrame) {
   const std::string folder = scratchFolder();
   writeSeparateFiles(folder, 1);

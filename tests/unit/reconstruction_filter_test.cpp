@@ -84,6 +84,19 @@ TEST(Jitter, CheckedJitterRefusesNonFiniteOffsetsNamingTheSource) {
     EXPECT_STREQ(e.what(), "jitter (nan, 0.5) from the header attribute j is not a finite "
                            "number of pixels : beauty.0007.exr (frame 7)");
   }
+  // Issue 25: 1e38 was taken. A jitter is at most a pixel from the centre.
+  EXPECT_EQ(checkedJitter({-1.0f, 1.0f}, "x"), glm::vec2(-1.0f, 1.0f));
+  for (glm::vec2 far : {glm::vec2(1e38f, 0.0f), glm::vec2(0.0f, -1.5f)}) {
+    try {
+      checkedJitter(far, "the camera sidecar");
+      FAIL() << "no error for " << far.x << ", " << far.y;
+    } catch (const Error& e) {
+      EXPECT_NE(std::string(e.what()).find("from the camera sidecar is more than 1 pixel from "
+                                           "the pixel centre"),
+                std::string::npos)
+          << e.what();
+    }
+  }
 }
 
 }  // namespace

@@ -12,6 +12,7 @@
 #include "capi/host_enum.h"
 #include "capi/status_error.h"
 #include "io/aov_conversion.h"
+#include "io/frame_reader.h"
 
 namespace taa::capi {
 namespace {
@@ -84,6 +85,12 @@ Layout describe(const taa_buffer& buffer, const char* what, int minChannels, int
   if (buffer.width <= 0 || buffer.height <= 0) {
     invalid(name + " buffer size must be positive, got " + std::to_string(buffer.width) + "x" +
             std::to_string(buffer.height));
+  }
+  // Before anything is allocated for it: files are held to the same limit (io/frame_reader.h).
+  if (buffer.width > io::kMaxImageSide || buffer.height > io::kMaxImageSide) {
+    invalid(name + " buffer is " + std::to_string(buffer.width) + "x" +
+            std::to_string(buffer.height) + ": at most " + std::to_string(io::kMaxImageSide) +
+            " pixels a side (the GL texture limit taa relies on)");
   }
   if (expectWidth > 0 && (buffer.width != expectWidth || buffer.height != expectHeight)) {
     invalid(name + " is " + std::to_string(buffer.width) + "x" + std::to_string(buffer.height) +

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <limits>
 #include <functional>
 #include <map>
@@ -301,6 +302,20 @@ void resolveFrameList(CommandLine& cl) {
   const std::string& pattern = cl.job.layout.color.pattern;
   if (!cl.framesText.empty()) {
     cl.job.frames = io::parseFrameRange(cl.framesText);
+    if (cl.skipMissing && io::hasFramePlaceholder(pattern)) {
+      // Frames asked for whose colour file is not there are skipped too, and reported.
+      std::vector<int> present;
+      cl.missingFrames.clear();
+      for (int frame : cl.job.frames) {
+        std::error_code ec;
+        const bool exists = std::filesystem::exists(io::expandFramePattern(pattern, frame), ec);
+        (exists ? present : cl.missingFrames).push_back(frame);
+      }
+      if (present.empty()) {
+        throw Error("none of the frames " + cl.framesText + " exists", {pattern});
+      }
+      cl.job.frames = std::move(present);
+    }
   } else if (io::hasFramePlaceholder(pattern)) {
     cl.job.frames = io::scanExistingFrames(pattern);
     if (cl.job.frames.empty()) throw Error("no frames found for the color pattern", {pattern});

@@ -33,7 +33,8 @@ void useOcioEnvironmentUnlessGiven(CommandLine& commandLine, const std::vector<s
 
 // Fills job.frames from --frames or, without it, from the color files found on disk. Frames
 // missing between the first and last found are an error naming the first missing file, unless
-// --skip-missing is given (they are kept in missingFrames for the report).
+// --skip-missing is given (they are kept in missingFrames for the report). With --frames and
+// --skip-missing, frames asked for whose colour file is missing are skipped the same way.
 void resolveFrameList(CommandLine& commandLine);
 
 std::string helpText();

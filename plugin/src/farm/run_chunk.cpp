@@ -10,6 +10,7 @@
 #include "util/one_line_text.h"
 #include "farm/shot.h"
 #include "farm/verbs.h"
+#include "io/file_presence.h"
 #include "io/output_completeness.h"
 #include "resolve/window_plan.h"
 #include "util/interruption.h"
@@ -65,9 +66,8 @@ void requireInputs(const SequenceJob& job, const std::vector<int>& frames,
                    const std::string& chunkName) {
   for (int frame : frames) {
     for (const InputFile& input : frameInputFiles(job.layout, frame)) {
-      std::error_code ec;
-      if (!fs::is_regular_file(input.path, ec)) {
-        throw InputsNotReady("input frame not ready (missing), needed by " + chunkName,
+      if (const std::string absence = io::fileAbsence(input.path); !absence.empty()) {
+        throw InputsNotReady("input frame not ready (" + absence + "), needed by " + chunkName,
                              {input.path, frame, input.aov});
       }
     }

@@ -17,6 +17,7 @@
 
 #include "io/aov_conversion.h"
 #include "io/camera_note.h"
+#include "io/file_presence.h"
 #include "io/part_channels.h"
 #include "io/sequence_pattern.h"
 #include "taa/error.h"
@@ -57,9 +58,10 @@ constexpr unsigned char kExrMagic[4] = {0x76, 0x2f, 0x31, 0x01};
 // each loaded at a cost in time and memory, their bugs not ours to meet).
 OpenExr openExr(const std::string& path, const std::string& aovName, int frame) {
   const ErrorContext context{path, frame, ""};
-  std::error_code ignored;
-  if (!std::filesystem::exists(path, ignored)) {
+  if (const std::string absence = fileAbsence(path); absence == "missing") {
     throw Error("cannot find the " + aovName + " file", context);
+  } else if (!absence.empty()) {
+    throw Error("the " + aovName + " file is " + absence, context);
   }
   unsigned char magic[4] = {};
   if (std::FILE* file = std::fopen(path.c_str(), "rb")) {

@@ -59,6 +59,12 @@ WriteBehind::~WriteBehind() { drain(pending_); }
 void WriteBehind::push(std::function<void()> write, int index) {
   pending_.emplace_back(std::async(policyFor(depth_), std::move(write)), index);
   while (int(pending_.size()) > depth_) finishOldest();
+  // Writes already done are reported now, not when the queue next fills: a farm's PROGRESS
+  // line then trails its rename by at most the frame being resolved (issue 25).
+  while (!pending_.empty() &&
+         pending_.front().first.wait_for(std::chrono::seconds(0)) == std::future_status::ready) {
+    finishOldest();
+  }
 }
 
 void WriteBehind::finishOldest() {

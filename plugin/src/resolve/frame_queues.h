@@ -39,7 +39,7 @@ class ReadAhead {
 class WriteBehind {
  public:
   // Up to `depth` writes run while more frames are resolved; `done` is called after each
-  // write, in order, on the calling thread.
+  // write, in order, on the calling thread: at the latest when the next frame is pushed.
   WriteBehind(int depth, std::function<void(int index)> done);
   ~WriteBehind();
   WriteBehind(const WriteBehind&) = delete;

@@ -36,10 +36,18 @@ glm::vec2 frameJitter(int frame, const JitterOptions& options) {
 
 glm::vec2 checkedJitter(glm::vec2 jitter, const std::string& source,
                         const ErrorContext& context) {
-  if (std::isfinite(jitter.x) && std::isfinite(jitter.y)) return jitter;
+  const bool finite = std::isfinite(jitter.x) && std::isfinite(jitter.y);
+  if (finite && std::abs(jitter.x) <= kMaxJitter && std::abs(jitter.y) <= kMaxJitter) {
+    return jitter;
+  }
   std::ostringstream what;  // prints nan, inf, -inf
-  what << "jitter (" << jitter.x << ", " << jitter.y << ") from " << source
-       << " is not a finite number of pixels";
+  what << "jitter (" << jitter.x << ", " << jitter.y << ") from " << source;
+  if (finite) {
+    what << " is more than " << kMaxJitter << " pixel from the pixel centre: a jitter is a "
+         << "sub-pixel offset in pixels (is it in another unit?)";
+  } else {
+    what << " is not a finite number of pixels";
+  }
   throw Error(what.str(), context);
 }
 

@@ -23,9 +23,14 @@ long long haltonIndex(int frame, const JitterOptions& options);
 // for None.
 glm::vec2 frameJitter(int frame, const JitterOptions& options);
 
-// `jitter` when both offsets are finite; else throws taa::Error "jitter (x, y) from `source` is
-// not a finite number of pixels" with `context`. A NaN or Inf offset (a header attribute, a
-// sidecar, a host) would make every reconstruction weight NaN and the whole frame non-finite.
+// The largest jitter taken from outside, in pixels along either axis: a sample belongs to its
+// pixel's 3x3 neighbourhood. 1e38 was taken and made every reconstruction weight 0.
+inline constexpr float kMaxJitter = 1.0f;
+
+// `jitter` when both offsets are finite and within kMaxJitter; else throws taa::Error
+// "jitter (x, y) from `source` is not a finite number of pixels" (or "is more than 1 pixel
+// from the pixel centre") with `context`. A NaN or Inf offset (a header attribute, a sidecar,
+// a host) would make every reconstruction weight NaN and the whole frame non-finite.
 glm::vec2 checkedJitter(glm::vec2 jitter, const std::string& source,
                         const ErrorContext& context = {});
 

@@ -7,6 +7,7 @@
 #include <set>
 
 #include "io/camera_sidecar.h"
+#include "io/file_presence.h"
 #include "io/frame_reader.h"
 #include "io/sequence_pattern.h"
 #include "io/sequence_scan.h"
@@ -224,9 +225,9 @@ void validateSequenceJob(const SequenceJob& job) {
   std::set<std::string> inputs;
   for (int frame : job.frames) {
     for (const InputFile& input : frameInputFiles(job.layout, frame)) {
-      std::error_code ec;
-      if (!fs::is_regular_file(input.path, ec)) {
-        throw Error("missing input frame", {input.path, frame, input.aov});
+      if (const std::string absence = io::fileAbsence(input.path); !absence.empty()) {
+        throw Error(absence == "missing" ? "missing input frame" : "input frame is " + absence,
+                    {input.path, frame, input.aov});
       }
       inputs.insert(canonical(input.path));
     }
