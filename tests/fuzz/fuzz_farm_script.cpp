@@ -19,17 +19,27 @@ namespace {
 using taa::farm::SlurmOptions;
 using taa::farm::TaskCommand;
 
-// The words of single-quoted shell text as shellQuoted writes it: bare words, 'quoted' runs and
-// '\'' for a quote; anything else (an unquoted $, `, ; or line break) makes it nothing.
-bool shellWords(const std::string& text, std::vector<std::string>& words) {
+// The tokens of shell text as task_commands writes it: words (bare, 'quoted' runs, '\'' for a
+// quote), "||" and line breaks as tokens of their own. Anything else the shell would act on (an
+// unquoted $, `, ;, & or a lone |) makes it nothing.
+bool shellTokens(const std::string& text, std::vector<std::string>& tokens) {
   std::string word;
   bool inWord = false;
+  auto endWord = [&] {
+    if (inWord) tokens.push_back(word);
+    word.clear();
+    inWord = false;
+  };
   for (std::size_t i = 0; i < text.size(); ++i) {
     const char c = text[i];
-    if (c == ' ' || c == '\n') {
-      if (inWord) words.push_back(word);
-      word.clear();
-      inWord = false;
+    if (c == ' ') {
+      endWord();
+    } else if (c == '\n') {
+      endWord();
+      tokens.push_back("\n");
+    } else if (c == '|' && i + 1 < text.size() && text[i + 1] == '|' && !inWord) {
+      tokens.push_back("||");
+      ++i;
     } else if (c == '\'') {
       const std::size_t end = text.find('\'', i + 1);
       if (end == std::string::npos) return false;
@@ -42,13 +52,13 @@ bool shellWords(const std::string& text, std::vector<std::string>& words) {
       ++i;
     } else if (std::string("$`;&|<>(){}*?~!\"\\\t\r").find(c) != std::string::npos ||
                (c == '#' && !inWord)) {
-      return false;  // would mean something to the shell
+      return false;
     } else {
       word += c;
       inWord = true;
     }
   }
-  if (inWord) words.push_back(word);
+  endWord();
   return true;
 }
 
@@ -95,17 +105,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (!slurm.extra.empty()) expected.push_back(slurm.extra[0]);
   if (parsed.sbatchWords != expected) __builtin_trap();
 
-  const std::string cd = "cd -- ", exitLine = " || exit 1\nexec ";
-  const std::size_t exitAt = parsed.body.find(exitLine);
-  if (parsed.body.compare(0, cd.size(), cd) != 0 || exitAt == std::string::npos) __builtin_trap();
-  std::vector<std::string> folder, command;
-  if (!shellWords(parsed.body.substr(cd.size(), exitAt - cd.size()), folder) ||
-      folder != std::vector<std::string>{task.workingFolder}) {
-    __builtin_trap();
-  }
-  if (!shellWords(parsed.body.substr(exitAt + exitLine.size()), command)) __builtin_trap();
-  std::vector<std::string> wanted = {task.farmPath, "run", "--chunk", "5"};
+  std::vector<std::string> tokens;
+  if (!shellTokens(parsed.body, tokens)) __builtin_trap();
+  std::vector<std::string> wanted = {"cd", "--", task.workingFolder, "||", "exit", "1", "\n",
+                                     "exec", task.farmPath, "run", "--chunk", "5"};
   wanted.insert(wanted.end(), task.taatoolArgs.begin(), task.taatoolArgs.end());
-  if (command != wanted) __builtin_trap();
+  wanted.push_back("\n");
+  if (tokens != wanted) __builtin_trap();
   return 0;
 }
