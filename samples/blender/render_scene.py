@@ -2,13 +2,15 @@
 
     blender -b --factory-startup -P samples/blender/render_scene.py -- \
         --scene cycles_fence --out DIR [--size 320x180] [--frames 1-24] \
-        [--products input,aux,truth,ssaa,camera] [--truth-samples 1024] [--ssaa 2,4,8,16]
+        [--products input,aux,truth,ssaa,camera,nomoving] [--truth-samples 1024] [--ssaa 2,4,8,16]
 
 Writes into DIR (samples/README.md, "Blender scenes"): input.####.exr (1 spp at the frame's
 Halton jitter, multilayer ViewLayer.Combined/Depth/Vector as Cycles writes it, half colour),
 aux.####.exr (1 spp unjittered, float: depth and vectors at the pixel centres), truth.####.exr
 (--truth-samples spp, unjittered), ssaaN.####.exr (mean of N 1-spp renders at the Halton
-offsets 1..N), camera.json (taatool's camera sidecar). `--list` prints the scenes.
+offsets 1..N), camera.json (taatool's camera sidecar); for a scene with a MOVING object,
+nomoving.####.exr (the truth without it, a quarter of the samples) and its object index in
+aux. `--list` prints the scenes.
 
 Each product is cached: PRODUCT.stamp records what made it (scene sources, size, frames, its
 parameters, Blender's version); a product whose stamp matches is not rendered again, so the
@@ -29,7 +31,7 @@ import bpy  # noqa: E402
 from taa_scenes import SCENES, YARDSTICK  # noqa: E402
 from taa_scenes.render import Renderer  # noqa: E402
 
-PRODUCTS = ('camera', 'input', 'aux', 'ssaa', 'truth')
+PRODUCTS = ('camera', 'input', 'aux', 'ssaa', 'truth', 'nomoving')
 
 
 def frame_range(text):
@@ -79,12 +81,16 @@ def stamp_of(args, product):
     # (arguments, listing) do not change what is rendered.
     sources = [module.__file__, os.path.join(here, 'taa_scenes', 'build.py'),
                os.path.join(here, 'taa_scenes', 'render.py')]
+    if product == 'input':  # rendered through the add-on
+        addon = os.path.join(here, '..', '..', 'plugin', 'blender', 'taa_render')
+        sources += sorted(glob.glob(os.path.join(addon, '*.py')))
     params = {'truth': {'samples': args.truth_samples}, 'ssaa': {'counts': args.ssaa},
-              'input': {'depth': args.input_depth}}.get(product, {})
+              'input': {'depth': args.input_depth},
+              'nomoving': {'samples': args.truth_samples // 4}}.get(product, {})
     stamp = {
         'product': product, 'scene': args.scene, 'size': list(args.size),
         'frames': list(args.frames), 'params': params, 'blender': bpy.app.version_string,
-        'sources': {os.path.basename(path): hashlib.sha256(open(path, 'rb').read()).hexdigest()
+        'sources': {os.path.relpath(path, here): hashlib.sha256(open(path, 'rb').read()).hexdigest()
                     for path in sources},
     }
     return json.dumps(stamp, indent=1, sort_keys=True) + '\n'
@@ -118,18 +124,22 @@ def main():
     scene = bpy.context.scene
     scene.frame_start, scene.frame_end = first, last
     start = time.time()
+    module = SCENES[args.scene]
+    moving = getattr(module, 'MOVING', None)
     renderer = Renderer(args.size[0], args.size[1], args.out,
                         log=lambda text: print('render_scene: %s: %s (%.0f s)' % (
-                            args.scene, text, time.time() - start), flush=True))
+                            args.scene, text, time.time() - start), flush=True),
+                        max_bounces=getattr(module, 'MAX_BOUNCES', 0), moving=moving)
     render = {
         'camera': lambda: renderer.camera_sidecar(frames, os.path.join(args.out, 'camera.json')),
         'input': lambda: renderer.input(frames, half=args.input_depth == 'half'),
         'aux': lambda: renderer.aux(frames),
         'ssaa': lambda: renderer.ssaa(frames, args.ssaa),
         'truth': lambda: renderer.truth(frames, args.truth_samples),
+        'nomoving': lambda: renderer.without_moving(frames, args.truth_samples // 4),
     }
     for product in PRODUCTS:
-        if product not in args.products:
+        if product not in args.products or (product == 'nomoving' and not moving):
             continue
         stamp = stamp_of(args, product)
         if is_current(args.out, product, stamp):

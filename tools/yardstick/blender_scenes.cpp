@@ -50,6 +50,28 @@ CyclesCentres readCentres(const fs::path& dir, int frame, const io::CameraSideca
           cameras.camera(frame)};
 }
 
+// The moving object and its shadow, where the scene has one (render_scene.py's nomoving
+// product and the aux render's object index): the object where the pixel centre sees it; its
+// shadow where, elsewhere, the truth is at most 70% of the truth without the object (its
+// contact shadow and the light it blocks), on surfaces that are lit without it.
+std::optional<Image> movingRegions(const fs::path& dir, int frame, const Image& linearTruth) {
+  const std::string without = framePath(dir, "nomoving", frame);
+  if (!fs::exists(without)) return std::nullopt;
+  const Image index = readExrChannels(framePath(dir, "aux", frame), {"ViewLayer.IndexOB.X"});
+  const Image free = readExrChannels(without, {"R", "G", "B"});
+  Image regions(linearTruth.width, linearTruth.height, 2);
+  auto luma = [](const float* p) { return 0.2126f * p[0] + 0.7152f * p[1] + 0.0722f * p[2]; };
+  for (int y = 0; y < regions.height; ++y) {
+    for (int x = 0; x < regions.width; ++x) {
+      const bool object = index.at(x, y)[0] > 0.5f;
+      const float lit = luma(free.at(x, y)), shaded = luma(linearTruth.at(x, y));
+      regions.at(x, y)[0] = object ? 1.0f : 0.0f;
+      regions.at(x, y)[1] = !object && lit > 0.02f && shaded < 0.7f * lit ? 1.0f : 0.0f;
+    }
+  }
+  return regions;
+}
+
 }  // namespace
 
 std::vector<std::pair<std::string, std::string>> listBlenderScenes(
@@ -113,16 +135,18 @@ PreparedScene prepareBlenderScene(const BlenderSettings& settings, const Blender
   scene.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   scene.made = logSince(logPath, logStart).find(" rendered") != std::string::npos;
 
-  const std::string sidecarPath = (dir / "camera.json").string();
-  scene.taatoolInputs = {(dir / "input.####.exr").string(), "--preset", "cycles",
-                         "--camera-sidecar", sidecarPath};
-  const io::CameraSidecar cameras = io::CameraSidecar::load(sidecarPath);
+  // Rendered through taa's Blender add-on: each frame's camera and jitter are in its header,
+  // read with no flag but the preset. The sidecar serves the reference's flow only.
+  scene.taatoolInputs = {(dir / "input.####.exr").string(), "--preset", "cycles"};
+  const io::CameraSidecar cameras = io::CameraSidecar::load((dir / "camera.json").string());
   std::vector<ReferenceFrame> frames;
   std::optional<CyclesCentres> previous;
   for (int f = request.firstFrame; f <= request.lastFrame; ++f) {
     ReferenceFrame frame;
     frame.frame = f;
-    frame.truth = tonemap(readExrChannels(framePath(dir, "truth", f), {"R", "G", "B"}));
+    const Image linearTruth = readExrChannels(framePath(dir, "truth", f), {"R", "G", "B"});
+    frame.truth = tonemap(linearTruth);
+    if (auto regions = movingRegions(dir, f, linearTruth)) frame.regions = std::move(*regions);
     frame.raw = tonemap(readExrChannels(
         framePath(dir, "input", f),
         {"ViewLayer.Combined.R", "ViewLayer.Combined.G", "ViewLayer.Combined.B"}));

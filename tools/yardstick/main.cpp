@@ -338,13 +338,18 @@ int run(const Arguments& args) {
           std::string("$TAA_RENDER_CACHE") +
           "` (default `~/.cache/taa/blender`). The input is what Cycles writes: one multilayer EXR a frame (half "
           "`ViewLayer.Combined`, float `Depth` and `Vector`), 1 sample per pixel with a BOX "
-          "filter of width 1 at the frame's Halton jitter (a lens shift), read by taatool "
-          "with `--preset cycles --camera-sidecar camera.json`. Truth: " +
-          std::to_string(args.blender.truthSamples) +
+          "filter of width 1 at the frame's Halton jitter (a lens shift), rendered through "
+          "taa's Blender add-on (`plugin/blender`: each frame's camera and jitter in its "
+          "header's Note) and read by taatool with `--preset cycles` and no other flag. "
+          "Truth: " + std::to_string(args.blender.truthSamples) +
           " samples per pixel, unjittered. ssaa-N rows: the mean of N 1-spp renders at the "
           "Halton offsets 1..N (N = " + counts +
           "), the supersampling a resolve is read against. Emission and direct light only (no "
-          "bounces, radius-0 lights), so aliasing is the only error.\n",
+          "bounces, radius-0 lights), so aliasing is the only error, except cycles_contact: "
+          "3 bounces, each frame's own noise (an animated seed), its moving box and contact "
+          "shadow measured apart (the table after the main one: PSNR inside the box, where "
+          "the aux render's object index says it is, and inside its shadow, where the truth "
+          "is at most 70% of a render without the box).\n",
       {}, {}};
   ReportSection analyticSection{
       "Analytic scenes",
@@ -438,6 +443,9 @@ int run(const Arguments& args) {
   std::string tables;
   if (!realRows.empty()) {
     realSection.table = formatTable(realRows, realOrder);
+    if (const std::string regions = formatRegionTable(realRows, realOrder); !regions.empty()) {
+      realSection.table += "\nThe moving object and its shadow:\n\n" + regions;
+    }
     tables += "\nReal renders\n" + realSection.table;
     description.sections.push_back(realSection);
   }

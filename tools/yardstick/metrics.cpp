@@ -183,6 +183,21 @@ MeanAccumulator maskedAbsError(const Image& a, const Image& b, const Image& mask
   return result;
 }
 
+MeanAccumulator maskedSquaredError(const Image& a, const Image& b, const Image& mask, int c) {
+  requireSameSize(a, b, "error");
+  MeanAccumulator result;
+  for (int y = 0; y < a.height; ++y) {
+    for (int x = 0; x < a.width; ++x) {
+      if (!(mask.at(x, y)[c] > 0.5f)) continue;
+      for (int k = 0; k < 3; ++k) {
+        const double d = double(a.at(x, y)[k]) - b.at(x, y)[k];
+        result.add(d * d);
+      }
+    }
+  }
+  return result;
+}
+
 void DisocclusionAge::advance(const Image& disocclusion, const Image& flow, bool restart) {
   const int w = disocclusion.width, h = disocclusion.height;
   Image next(w, h, 1);

@@ -58,6 +58,9 @@ MeanAccumulator temporalError(const Image& now, const Image& before, const Image
 // RGB mean of |a - b| over the pixels where mask > 0 (every pixel when mask is empty).
 MeanAccumulator maskedAbsError(const Image& a, const Image& b, const Image& mask);
 
+// (a - b)^2 of every RGB value of the pixels where channel `c` of `mask` is > 0.5, pooled.
+MeanAccumulator maskedSquaredError(const Image& a, const Image& b, const Image& mask, int c);
+
 // Tracks how many frames ago each pixel's surface was disoccluded, following it along the
 // flow, so that "disoccluded within the last k frames" can be asked of the current frame.
 class DisocclusionAge {

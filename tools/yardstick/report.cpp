@@ -118,6 +118,31 @@ std::string formatTable(const std::vector<ResultRow>& rows,
   return table;
 }
 
+std::string formatRegionTable(const std::vector<ResultRow>& rows,
+                              const std::vector<std::string>& configurationOrder) {
+  std::string table;
+  std::vector<std::string> scenes;
+  for (const ResultRow& r : rows) {
+    if (std::isnan(r.scores.movingPsnr)) continue;
+    if (std::find(scenes.begin(), scenes.end(), r.scene) == scenes.end()) {
+      scenes.push_back(r.scene);
+    }
+  }
+  for (const std::string& scene : scenes) {
+    for (const std::string& configuration : configurationOrder) {
+      for (const ResultRow& r : rows) {
+        if (r.scene != scene || r.configuration != configuration) continue;
+        table += "| " + scene + " | " + configuration + " | " + number(r.scores.psnr, "%.2f") +
+                 " | " + number(r.scores.movingPsnr, "%.2f") + " | " +
+                 number(r.scores.shadowPsnr, "%.2f") + " |\n";
+      }
+    }
+  }
+  if (table.empty()) return table;
+  return "| scene | configuration | PSNR (dB) | inside the moving object | inside its shadow |\n"
+         "|---|---|---:|---:|---:|\n" + table;
+}
+
 std::string formatQualityPage(const RunDescription& run) {
   std::string page;
   page += "# Quality\n\n";

@@ -29,6 +29,11 @@ double equivalentSpp(double psnr, const std::vector<std::pair<int, double>>& lad
 // One row per scene and configuration in the given order, then one "mean" row per
 // configuration (NaN figures are left out of the means and printed as "-"). The "spp" column
 // appears when any row has an equivalent spp.
+// The rows of scenes with a moving object and its shadow (Scores::movingPsnr, shadowPsnr),
+// each scene's configurations in `configurationOrder`; empty when no row has them.
+std::string formatRegionTable(const std::vector<ResultRow>& rows,
+                              const std::vector<std::string>& configurationOrder);
+
 std::string formatTable(const std::vector<ResultRow>& rows,
                         const std::vector<std::string>& configurationOrder);
 

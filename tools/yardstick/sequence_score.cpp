@@ -40,6 +40,19 @@ MeanAccumulator ghostErrorOf(const Reference& reference, const std::vector<Image
   return total;
 }
 
+// PSNR over the measured frames' pixels where channel `c` of the regions is set.
+double regionPsnr(const Reference& reference, const std::vector<Image>& sequence, int c) {
+  MeanAccumulator squared;
+  for (std::size_t k = 0; k < reference.frames.size(); ++k) {
+    const ReferenceFrame& frame = reference.frames[k];
+    if (!reference.measured[k] || frame.regions.channels <= c) continue;
+    squared.add(maskedSquaredError(sequence[k], frame.truth, frame.regions, c));
+  }
+  if (squared.count == 0) return std::numeric_limits<double>::quiet_NaN();
+  return squared.mean() > 0.0 ? -10.0 * std::log10(squared.mean())
+                              : std::numeric_limits<double>::infinity();
+}
+
 double ratio(const MeanAccumulator& a, const MeanAccumulator& b) {
   if (a.count == 0 || b.count == 0 || b.mean() == 0.0) {
     return std::numeric_limits<double>::quiet_NaN();
@@ -90,6 +103,8 @@ Scores score(const Reference& reference, const std::vector<Image>& output) {
   scores.temporal = temporalErrorOf(reference, output).mean();
   scores.flicker = ratio(flickerOf(reference, output), reference.truthFlicker);
   scores.ghosting = ratio(ghostErrorOf(reference, output), reference.rawGhostError);
+  scores.movingPsnr = regionPsnr(reference, output, 0);
+  scores.shadowPsnr = regionPsnr(reference, output, 1);
   return scores;
 }
 

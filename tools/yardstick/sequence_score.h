@@ -2,6 +2,7 @@
 // disocclusion): the means the yardstick's table shows.
 #pragma once
 
+#include <limits>
 #include <vector>
 
 #include "util/image.h"
@@ -16,6 +17,9 @@ struct ReferenceFrame {
   Image truth, raw;
   Image flow;          // exact motion, previous - current, px, y down
   Image disocclusion;  // 0 where the surface was visible at pos + flow in the previous frame
+  // Optional, 2 channels: 1 where the scene's moving object is (channel 0) and where its
+  // shadow falls (channel 1): the parts a window resolve may smear or see through.
+  Image regions;
 };
 
 struct ScoreOptions {
@@ -43,6 +47,10 @@ struct Scores {
   double flicker = 0.0;   // pooled motion-compensated change / the truth's (1 = as stable)
   double ghosting = 0.0;  // pooled error in recently disoccluded pixels / the raw input's;
                           // NaN when no measured frame has any
+  // PSNR (dB) pooled over the measured frames' pixels inside the moving object and inside its
+  // shadow (ReferenceFrame::regions); NaN where the scene has none.
+  double movingPsnr = std::numeric_limits<double>::quiet_NaN();
+  double shadowPsnr = std::numeric_limits<double>::quiet_NaN();
 };
 
 // `output`: the tonemapped sequence, one image per reference frame.

@@ -2,7 +2,7 @@
 of its conventions test. Each module builds its scene into an empty Blender scene with
 `build(frames)` and says what it stresses in `DESCRIPTION`. YARDSTICK lists the scenes the
 yardstick measures (`render_scene.py --list`); the others serve tests."""
-from . import ball, blades, conventions, fence, floor, lit
+from . import ball, blades, contact, conventions, fence, floor, lit
 
 SCENES = {
     'cycles_fence': fence,
@@ -10,7 +10,9 @@ SCENES = {
     'cycles_blades': blades,
     'cycles_floor': floor,
     'cycles_lit': lit,
+    'cycles_contact': contact,
     'cycles_conventions': conventions,
 }
 
-YARDSTICK = ['cycles_fence', 'cycles_ball', 'cycles_blades', 'cycles_floor', 'cycles_lit']
+YARDSTICK = ['cycles_fence', 'cycles_ball', 'cycles_blades', 'cycles_floor', 'cycles_lit',
+             'cycles_contact']

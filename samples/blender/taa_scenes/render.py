@@ -13,6 +13,7 @@ Facts of Blender 3.4's Cycles this relies on (checked by tests/blender):
 """
 import json
 import os
+import sys
 
 import bpy
 import numpy as np
@@ -32,8 +33,24 @@ def halton_jitter(index):
     return radical_inverse(index, 2) - 0.5, radical_inverse(index, 3) - 0.5
 
 
+ADDON_DIR = os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', '..', '..', 'plugin',
+                         'blender')
+
+
+def register_addon():
+    """taa's Blender add-on (plugin/blender/taa_render), registered from the source tree: the
+    input is rendered through it as a user renders (README "Rendering input for taa")."""
+    import importlib
+    if ADDON_DIR not in sys.path:
+        sys.path.insert(0, ADDON_DIR)
+    addon = importlib.import_module('taa_render')
+    if not hasattr(bpy.types.Scene, 'taa_render'):
+        addon.register()
+    return addon
+
+
 class Renderer:
-    def __init__(self, width, height, out_dir, log=print):
+    def __init__(self, width, height, out_dir, log=print, max_bounces=0, moving=None):
         self.scene = bpy.context.scene
         self.width, self.height = width, height
         self.out_dir = out_dir
@@ -43,7 +60,11 @@ class Renderer:
         s.cycles.device = 'CPU'
         s.cycles.use_adaptive_sampling = False
         s.cycles.use_denoising = False  # Debian's Blender has no OpenImageDenoise anyway
-        s.cycles.max_bounces = 0  # direct light only: no noise, aliasing is the only error
+        # Direct light only unless the scene asks for bounces: no noise, aliasing is then the
+        # only error. With bounces each frame gets its own noise (an animated seed), as
+        # renders for temporal accumulation are made.
+        s.cycles.max_bounces = max_bounces
+        s.cycles.use_animated_seed = max_bounces > 0
         s.cycles.caustics_reflective = s.cycles.caustics_refractive = False
         s.cycles.pixel_filter_type = 'BOX'
         s.cycles.filter_width = 1.0
@@ -58,6 +79,8 @@ class Renderer:
         settings = s.render.image_settings
         settings.exr_codec = 'ZIP'
         self.camera = s.camera
+        # The object the yardstick measures apart (its mask: the aux render's object index).
+        self.moving = bpy.data.objects.get(moving) if moving else None
         self.base_shift = (self.camera.data.shift_x, self.camera.data.shift_y)
 
     def _jitter_shift(self, jx, jy):
@@ -65,13 +88,15 @@ class Renderer:
         self.camera.data.shift_x = self.base_shift[0] + jx / side
         self.camera.data.shift_y = self.base_shift[1] - jy / side
 
-    def _render(self, path, frame, samples, jitter, multilayer, half):
+    def _render(self, path, frame, samples, jitter, multilayer, half, seed=0):
         s = self.scene
         s.frame_set(frame)
         self._jitter_shift(*jitter)
         s.cycles.samples = samples
+        s.cycles.seed = seed
         layer = s.view_layers[0]
         layer.use_pass_z = layer.use_pass_vector = multilayer
+        layer.use_pass_object_index = multilayer and self.moving is not None
         settings = s.render.image_settings
         settings.file_format = 'OPEN_EXR_MULTILAYER' if multilayer else 'OPEN_EXR'
         settings.color_mode = 'RGBA'
@@ -84,11 +109,26 @@ class Renderer:
         return os.path.join(self.out_dir, '%s.%04d.exr' % (stem, frame))
 
     def input(self, frames, half=True):
-        """The renderer's own output: 1 spp at the frame's Halton jitter, Combined, Depth and
-        Vector in one multilayer EXR (half colour, float depth and vectors, as Cycles writes)."""
-        for f in frames:
-            self._render(self.path('input', f), f, 1, halton_jitter(f), True, half)
-            self.log('input %d' % f)
+        """The renderer's own output through taa's add-on, one animation render: 1 spp at the
+        frame's Halton jitter (a lens shift), its camera in the header's Note, Combined, Depth
+        and Vector in one multilayer EXR (half colour, float depth and vectors)."""
+        register_addon()
+        s = self.scene
+        s.cycles.samples = 1
+        s.cycles.seed = 0
+        layer = s.view_layers[0]
+        layer.use_pass_object_index = False
+        settings = s.render.image_settings
+        settings.file_format = 'OPEN_EXR_MULTILAYER'
+        settings.color_depth = '16' if half else '32'
+        s.frame_start, s.frame_end = frames[0], frames[-1]
+        s.render.filepath = os.path.join(self.out_dir, 'input.####')
+        try:
+            if bpy.ops.taa.render(animation=True) != {'FINISHED'}:
+                raise RuntimeError('the taa add-on refused to render the input (see above)')
+        finally:
+            s.taa_render.enabled = False  # the operator leaves it on: later renders are ours
+        self.log('input %d-%d (through the add-on)' % (frames[0], frames[-1]))
 
     def aux(self, frames):
         """1 spp without jitter: depth and vectors exactly at the pixel centres, for the
@@ -110,13 +150,25 @@ class Renderer:
         for f in frames:
             total = None
             for n in range(1, max(counts) + 1):
-                self._render(scratch, f, 1, halton_jitter(n), False, False)
+                # Each render its own noise (with bounces): N renders are N samples.
+                self._render(scratch, f, 1, halton_jitter(n), False, False, seed=n)
                 pixels = _load_pixels(scratch)
                 total = pixels if total is None else total + pixels
                 if n in counts:
                     _save_pixels(self.path('ssaa%d' % n, f), total / n, self.width, self.height)
             self.log('ssaa %d (%d renders)' % (f, max(counts)))
         os.remove(scratch)
+
+    def without_moving(self, frames, samples):
+        """The truth without the moving object (hidden for camera and light): where the truth
+        is darker, the object shades the scene (its contact shadow)."""
+        self.moving.hide_render = True
+        try:
+            for f in frames:
+                self._render(self.path('nomoving', f), f, samples, (0.0, 0.0), False, False)
+                self.log('nomoving %d (%d samples)' % (f, samples))
+        finally:
+            self.moving.hide_render = False
 
     def camera_sidecar(self, frames, path):
         """taatool's camera sidecar: OpenGL view and projection (without jitter), jitter."""
