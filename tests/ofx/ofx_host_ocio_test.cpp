@@ -1,7 +1,8 @@
-// The tonemap bracket inside a host: hosts set $OCIO to the studio's config, which has none of
-// taa's bracket names. The plugin uses its shipped config unless the user picks $OCIO or a
-// file, and a bracket the picked config lacks is a persistent message on the effect naming
-// the config and what it offers, not a failed render without a word.
+// Colour inside a host: hosts set $OCIO to the studio's config, which has none of taa's names.
+// taa's brackets are its own maths and work in any config; the config serves the input and
+// output colorspaces (Automatic: $OCIO when set, as taatool). A name the picked config lacks is
+// a persistent message on the effect naming the config and what it offers, not a failed
+// render without a word.
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -68,20 +69,26 @@ TEST_F(OfxHostOcioTest, StudioOcioVariableDoesNotChangeTheDefaults) {
   destroy(effect);
 }
 
-TEST_F(OfxHostOcioTest, BracketMissingFromTheChosenConfigIsReportedOnTheEffect) {
+TEST_F(OfxHostOcioTest, TaasBracketWorksInTheStudioConfigAndMissingNamesAreReported) {
   auto effect = instance();
-  choose(*effect, 1);  // $OCIO
+  choose(*effect, 1);  // $OCIO: taa_reinhard is taa's, not the config's, and works
+  EXPECT_EQ(host_.persistentMessage(*effect), "");
+  EXPECT_LE(maxDifference(render(*effect, 1), expected(1)), 1e-5f);
+
+  set(*effect, "colorspaceIn", "acescg_typo");
   std::string message = host_.persistentMessage(*effect);
-  EXPECT_NE(message.find("OfxMessageError: TAA Resolve: unknown bracket colorspace or role "
-                         "\"taa_reinhard\" in the OCIO config $OCIO (" +
-                         studio_ + "), which offers the brackets none, lin, gamma_half"),
+  EXPECT_NE(message.find("OfxMessageError: TAA Resolve: unknown input colorspace or role "
+                         "\"acescg_typo\" in the OCIO config $OCIO (" +
+                         studio_ + "), which offers the colorspaces lin, gamma_half"),
             std::string::npos)
       << message;
-  render(*effect, 1, kOfxStatFailed);
+  render(*effect, 2, kOfxStatFailed);
   message = host_.persistentMessage(*effect);
-  EXPECT_NE(message.find("taa_reinhard"), std::string::npos) << message;
+  EXPECT_NE(message.find("acescg_typo"), std::string::npos) << message;
+  set(*effect, "colorspaceIn", "scene_linear");
+  EXPECT_EQ(host_.persistentMessage(*effect), "");
 
-  set(*effect, "bracket", "gamma_half");
+  set(*effect, "bracket", "gamma_half");  // a bracket of the config's own
   EXPECT_EQ(host_.persistentMessage(*effect), "");
   for (int f = kFirst; f <= 3; ++f) {
     EXPECT_LE(maxDifference(render(*effect, f),
@@ -105,6 +112,8 @@ TEST_F(OfxHostOcioTest, ConfigFileParameter) {
             std::string::npos)
       << host_.persistentMessage(*effect);
   set(*effect, "ocioConfigFile", studio_);
+  EXPECT_EQ(host_.persistentMessage(*effect), "");
+  set(*effect, "bracket", "no_such_bracket");
   EXPECT_NE(host_.persistentMessage(*effect).find("in the OCIO config " + studio_),
             std::string::npos)
       << host_.persistentMessage(*effect);

@@ -4,6 +4,7 @@ import shutil
 import subprocess
 
 import numpy as np
+import OpenImageIO as oiio
 import pytest
 
 import taa
@@ -130,34 +131,32 @@ def test_node_errors_carry_the_library_message():
     assert node.push(color + 0.25)[0, 0, 0] == pytest.approx(0.25)
 
 
-STUDIO_CONFIG = """ocio_profile_version: 2
-roles:
-  default: lin
-  scene_linear: lin
-file_rules:
-  - !<Rule> {name: Default, colorspace: default}
-displays:
-  d:
-    - !<View> {name: v, colorspace: lin}
-colorspaces:
-  - !<ColorSpace> {name: lin}
-"""
+ACES_CONFIG = os.path.join(os.environ.get("TAA_SOURCE_DIR", ""), "tests", "color",
+                           "aces_style.ocio")
 
 
-def test_ocio_variable_is_read_only_when_asked(tmp_root, monkeypatch):
-    """Hosts set $OCIO to a studio config without taa's brackets: the defaults ignore it."""
-    studio = os.path.join(tmp_root, "studio.ocio")
-    with open(studio, "w") as config:
-        config.write(STUDIO_CONFIG)
-    monkeypatch.setenv("OCIO", studio)
+def test_studio_ocio_follows_the_one_rule(tmp_root, monkeypatch):
+    """Any studio $OCIO works in every face (issue 24): the bracket is taa's maths, the config
+    (ocio_config, else $OCIO, else taa's) serves the input and output colorspaces."""
     color, depth, motion = load_frame(1)
+    monkeypatch.delenv("OCIO", raising=False)
     reference = taa.Node().push(color, depth=depth, motion=motion, frame=1)
-    monkeypatch.delenv("OCIO")
-    np.testing.assert_array_equal(
-        reference, taa.Node().push(color, depth=depth, motion=motion, frame=1))
+    monkeypatch.setenv("OCIO", ACES_CONFIG)
+    for parameters in ({}, {"ocio_config": "$OCIO"}, {"colorspace_in": "ACEScg"},
+                       {"ocio_config": ACES_CONFIG, "colorspace_in": "scene_linear"}):
+        np.testing.assert_array_equal(
+            reference, taa.Node(**parameters).push(color, depth=depth, motion=motion, frame=1),
+            err_msg=str(parameters))
+    # The config converts: ACES2065-1 input written as ACEScg differs from the input's space.
+    converted = taa.Node(colorspace_in="ACES2065-1", colorspace_out="ACEScg").push(
+        color, depth=depth, motion=motion, frame=1)
+    assert np.abs(converted - reference).max() > 1e-3
 
-    monkeypatch.setenv("OCIO", studio)
-    taa.resolve_sequence(os.path.join(SAMPLE_DIR, "beauty.####.exr"), frames="1",
-                         output=os.path.join(tmp_root, "studio_ocio.####.exr"))
-    with pytest.raises(taa.Error, match=r'"taa_reinhard" in the OCIO config \$OCIO \('):
-        taa.Node(ocio_config="$OCIO").push(color, frame=1)
+    out = os.path.join(tmp_root, "studio_ocio", "r.####.exr")
+    taa.resolve_sequence(os.path.join(SAMPLE_DIR, "beauty.####.exr"), frames="1-2",
+                         colorspace_in="ACEScg", output=out)
+    spec = oiio.ImageInput.open(out.replace("####", "0002")).spec()
+    assert spec.get_string_attribute("taa:colorspace") == "ACEScg"
+    assert spec.get_string_attribute("taa:ocioConfig") == f"$OCIO ({ACES_CONFIG})"
+    with pytest.raises(taa.Error, match=r'unknown input colorspace or role "acescg_typo"'):
+        taa.Node(colorspace_in="acescg_typo").push(color, frame=1)

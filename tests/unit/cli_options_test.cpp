@@ -89,25 +89,6 @@ TEST(CliOptions, BracketOptions) {
   EXPECT_TRUE(parseCommandLine({"--list-brackets"}).listBrackets);
 }
 
-// taatool reads $OCIO when --ocio-config is not given; the parser alone (Python's
-// resolve_sequence) never does.
-TEST(CliOptions, OcioVariableIsTaatoolsDefaultOnly) {
-  const std::vector<std::string> plain = {"b.#.exr", "-o", "o.#.exr"};
-  const std::vector<std::string> given = {"b.#.exr", "-o", "o.#.exr", "--ocio-config", ""};
-  setenv("OCIO", "/studio/config.ocio", 1);
-  CommandLine cl = parseCommandLine(plain);
-  EXPECT_EQ(cl.job.resolve.color.ocioConfig, "");
-  useOcioEnvironmentUnlessGiven(cl, plain);
-  EXPECT_EQ(cl.job.resolve.color.ocioConfig, "$OCIO");
-  cl = parseCommandLine(given);
-  useOcioEnvironmentUnlessGiven(cl, given);
-  EXPECT_EQ(cl.job.resolve.color.ocioConfig, "");
-  unsetenv("OCIO");
-  cl = parseCommandLine(plain);
-  useOcioEnvironmentUnlessGiven(cl, plain);
-  EXPECT_EQ(cl.job.resolve.color.ocioConfig, "");
-}
-
 TEST(CliOptions, ErrorsNameTheArgument) {
   EXPECT_NE(errorOf({"b.#.exr", "--gl", "vulkan"}).find("vulkan"), std::string::npos);
   EXPECT_NE(errorOf({"b.#.exr", "--frobnicate"}).find("--frobnicate"), std::string::npos);

@@ -55,6 +55,10 @@ std::string errorOf(const ColorOptions& options) {
   return "";
 }
 
+// The ACES-style config written from the published matrices, and Debian's Blender config.
+std::string acesConfig() { return TAA_SOURCE_DIR "/tests/color/aces_style.ocio"; }
+constexpr const char* kBlenderConfig = "/usr/share/blender/datafiles/colormanagement/config.ocio";
+
 class OcioBracketTest : public ::testing::Test {
  protected:
   void TearDown() override { unsetenv("OCIO"); }
@@ -104,20 +108,138 @@ TEST_F(OcioBracketTest, UserConfigByPathAndByOcioVariable) {
   EXPECT_NEAR(named[2], 16.0f, 1e-5f);
 }
 
-// Hosts set $OCIO to the studio's config, which has no taa_reinhard: an empty config name is
-// the shipped config whatever $OCIO says, and $OCIO is read only when asked for by name.
-TEST_F(OcioBracketTest, OcioVariableIsReadOnlyWhenAskedFor) {
+// One rule in every face: the config named, else $OCIO's when set, else taa's shipped one.
+TEST_F(OcioBracketTest, ConfigIsTheOneNamedElseOcioElseShipped) {
   const std::string path = writeUserConfig();
-  setenv("OCIO", path.c_str(), 1);
-  EXPECT_EQ(loadConfig("").description, "taa's shipped config");
-  ColorOptions options;  // the defaults: shipped config, taa_reinhard
-  EXPECT_NO_THROW(OcioBracket{options});
-  options.ocioConfig = "$OCIO";
-  EXPECT_NE(errorOf(options).find("$OCIO (" + path + ")"), std::string::npos) << errorOf(options);
-
   unsetenv("OCIO");
+  EXPECT_EQ(loadConfig("").description, "taa's shipped config");
+  setenv("OCIO", path.c_str(), 1);
+  EXPECT_EQ(loadConfig("").description, "$OCIO (" + path + ")");
+  EXPECT_EQ(loadConfig(path).description, path);
+  unsetenv("OCIO");
+  ColorOptions options;
+  options.ocioConfig = "$OCIO";
   const std::string message = errorOf(options);
   EXPECT_NE(message.find("$OCIO is not set"), std::string::npos) << message;
+}
+
+// Studio configs have none of taa's names: the bracket is taa's maths on the config's
+// scene_linear values whatever the config (issue 24: "unknown bracket taa_reinhard" with $OCIO
+// set to Blender's config).
+TEST_F(OcioBracketTest, TaaBracketsWorkInAnyConfig) {
+  std::vector<std::string> configs = {writeUserConfig(), acesConfig()};
+  if (fs::exists(kBlenderConfig)) configs.push_back(kBlenderConfig);
+  for (const std::string& config : configs) {
+    for (const bool viaEnvironment : {false, true}) {
+      ColorOptions options;  // the defaults: scene_linear in and out, taa_reinhard
+      if (viaEnvironment) {
+        setenv("OCIO", config.c_str(), 1);
+      } else {
+        options.ocioConfig = config;
+      }
+      const std::string message = errorOf(options);
+      ASSERT_EQ(message, "") << config;
+      const OcioBracket bracket(options);
+      float pixel[3] = {4.0f, 1.0f, 0.0f};
+      bracket.toWorkingCpu()->applyRGB(pixel);
+      EXPECT_NEAR(pixel[0], 0.5f, 1e-6f) << config;
+      EXPECT_NEAR(pixel[1], 0.2f, 1e-6f) << config;
+      bracket.fromWorkingCpu()->applyRGB(pixel);
+      EXPECT_NEAR(pixel[0], 4.0f, 1e-4f) << config;
+      unsetenv("OCIO");
+    }
+    const auto names = listBrackets(loadConfig(config).config);
+    for (const char* name : {"none", "taa_reinhard", "taa_log2"}) {
+      EXPECT_NE(std::find(names.begin(), names.end(), name), names.end()) << config << name;
+    }
+  }
+}
+
+// The default bracket built in a user config is the very shader the shipped config gave
+// before the rule (getProcessor("linear", "taa_reinhard")): outputs stay bit-identical.
+TEST_F(OcioBracketTest, DefaultBracketIsTheShippedConfigsShaderInEveryConfig) {
+  const OCIO::ConstConfigRcPtr shipped = loadConfig("").config;
+  auto text = [](const OCIO::ConstProcessorRcPtr& processor) {
+    OCIO::GpuShaderDescRcPtr desc = OCIO::GpuShaderDesc::CreateShaderDesc();
+    desc->setLanguage(OCIO::GPU_LANGUAGE_GLSL_4_0);
+    desc->setFunctionName(kToWorkingFunction);
+    desc->setResourcePrefix((std::string(kToWorkingFunction) + "_").c_str());
+    processor->getDefaultGPUProcessor()->extractGpuShaderInfo(desc);
+    return std::string(desc->getShaderText());
+  };
+  const std::string before = text(shipped->getProcessor("linear", "taa_reinhard"));
+  EXPECT_EQ(OcioBracket(ColorOptions{}).toWorking()->getShaderText(), before);
+  ColorOptions aces;
+  aces.ocioConfig = acesConfig();
+  aces.colorspaceIn = "ACEScg";  // its scene_linear: nothing to convert
+  EXPECT_EQ(OcioBracket(aces).toWorking()->getShaderText(), before);
+}
+
+// ACES2065-1 input: converted to ACEScg (the config's scene_linear) for the bracket, and the
+// output to the colorspace asked for; the matrices are the published ones, applied here.
+TEST_F(OcioBracketTest, AcesInputIsBracketedInSceneLinearAndOutputWhereAsked) {
+  ColorOptions options;
+  options.ocioConfig = acesConfig();
+  options.colorspaceIn = "ACES2065-1";
+  options.colorspaceOut = "lin_rec709";
+  const OcioBracket bracket(options);
+  const float ap0[3] = {0.5f, 2.0f, 8.0f};
+  float pixel[3] = {ap0[0], ap0[1], ap0[2]};
+  bracket.toWorkingCpu()->applyRGB(pixel);
+  const float ap0ToAp1[3][3] = {{1.4514393161f, -0.2365107469f, -0.2149285693f},
+                                {-0.0765537734f, 1.1762296998f, -0.0996759264f},
+                                {0.0083161484f, -0.0060324498f, 0.9977163014f}};
+  const float ap0To709[3][3] = {{2.5216861867f, -1.1341309062f, -0.3875552805f},
+                                {-0.2764799076f, 1.3727190652f, -0.0962391576f},
+                                {-0.0153780649f, -0.1529753224f, 1.1683533873f}};
+  for (int r = 0; r < 3; ++r) {
+    const float ap1 = ap0ToAp1[r][0] * ap0[0] + ap0ToAp1[r][1] * ap0[1] + ap0ToAp1[r][2] * ap0[2];
+    EXPECT_NEAR(pixel[r], ap1 >= 0 ? ap1 / (ap1 + 4.0f) : ap1 / 4.0f, 1e-5f) << r;
+  }
+  bracket.fromWorkingCpu()->applyRGB(pixel);
+  for (int r = 0; r < 3; ++r) {
+    const float rec709 =
+        ap0To709[r][0] * ap0[0] + ap0To709[r][1] * ap0[1] + ap0To709[r][2] * ap0[2];
+    EXPECT_NEAR(pixel[r], rec709, 1e-4f * std::max(1.0f, std::abs(rec709))) << r;
+  }
+  EXPECT_EQ(outputColorspace(options).colorspace, "lin_rec709");
+  options.colorspaceOut.clear();  // the output keeps the input's colorspace
+  EXPECT_EQ(outputColorspace(options).colorspace, "ACES2065-1");
+  options.colorspaceIn = "scene_linear";
+  EXPECT_EQ(outputColorspace(options).colorspace, "ACEScg");
+  EXPECT_EQ(outputColorspace(options).config, acesConfig());
+  EXPECT_EQ(outputColorspace(ColorOptions{}).colorspace, "linear");
+}
+
+// OCIO does not require a scene_linear role: the defaults still resolve (the input taken as
+// linear); a named colorspace needs the role, and the message says so.
+TEST_F(OcioBracketTest, ConfigWithoutSceneLinearRole) {
+  const fs::path path = fs::path(TAA_TEST_TMPDIR) / "no_scene_linear.ocio";
+  fs::create_directories(path.parent_path());
+  std::ofstream(path) << R"(ocio_profile_version: 2
+roles:
+  default: lin
+file_rules:
+  - !<Rule> {name: Default, colorspace: default}
+displays:
+  d:
+    - !<View> {name: v, colorspace: lin}
+colorspaces:
+  - !<ColorSpace> {name: lin}
+  - !<ColorSpace>
+    name: gamma_half
+    from_scene_reference: !<ExponentTransform> {value: 0.5, style: pass_thru}
+)";
+  ColorOptions options;
+  options.ocioConfig = path.string();
+  EXPECT_EQ(errorOf(options), "");
+  options.bracket = "none";
+  EXPECT_EQ(errorOf(options), "");
+  options.bracket = "taa_reinhard";
+  options.colorspaceIn = "gamma_half";
+  const std::string message = errorOf(options);
+  EXPECT_NE(message.find("no scene_linear role"), std::string::npos) << message;
+  EXPECT_NE(message.find(path.string()), std::string::npos) << message;
 }
 
 TEST_F(OcioBracketTest, ErrorsNameTheConfigAndTheName) {

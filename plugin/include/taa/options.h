@@ -32,18 +32,22 @@ struct JitterOptions {
 // from `colorspaceIn` into the `bracket` working space, and its result is converted from the
 // working space into `colorspaceOut`. All fields are [program].
 struct ColorOptions {
-  // An OCIO config file. Empty: taa's shipped config (ocio/config.ocio, embedded in the
-  // library). "$OCIO": the config the OCIO environment variable names; only then is $OCIO
-  // read (taatool passes "$OCIO" when it is set and --ocio-config is not given).
+  // The OCIO config of the input and output colorspaces, one rule in every face. Empty: the
+  // config the OCIO environment variable names when it is set (a studio's), else taa's shipped
+  // config (ocio/config.ocio, embedded in the library). "$OCIO": the variable's, an error when
+  // it is not set. Anything else: a file.
   std::string ocioConfig;
-  // Colorspace (or role) of the input colour.
+  // Colorspace (or role) of the input colour, e.g. "ACEScg". The default role exists in any
+  // studio config; a config without it takes the input as linear.
   std::string colorspaceIn = "scene_linear";
-  // Working space of the resolve: a colorspace or named transform of the config, or "none"
-  // (no bracket: the resolve runs on input values). The default, taa's shipped taa_reinhard, is
-  // worth +5 dB on the HDR scene of the yardstick (docs/QUALITY.md); with a user config that
-  // lacks it, name one of its spaces or "none".
+  // Working space of the resolve. taa's own brackets, "taa_reinhard" (the default, worth +5 dB
+  // on the HDR scene of the yardstick, docs/QUALITY.md) and "taa_log2", are maths that work in
+  // any config: the input is converted to the config's scene_linear, compressed, resolved and
+  // converted back. Otherwise a colorspace or named transform of the config, or "none" (the
+  // resolve runs on input values).
   std::string bracket = "taa_reinhard";
-  // Colorspace (or role) of the output. Empty: the same as colorspaceIn.
+  // Colorspace (or role) of the output. Empty: the same as colorspaceIn (the output keeps the
+  // input's colorspace, and its header says which: taa:colorspace).
   std::string colorspaceOut;
 };
 

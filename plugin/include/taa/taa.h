@@ -150,8 +150,9 @@ TAA_API const char* taa_node_last_error(const taa_node* node);
  *   "jitter-offset", "rectify", "motion-dilation", "bracket", "mode", "window",
  *   "window-sigma"), take any of the three setters: the value is given to the option as
  *   taatool's text (ints as decimals, floats exactly).
- *   The tonemap bracket's OCIO config is taa's shipped one unless "ocio-config" names a file,
- *   or "$OCIO" for the config that variable names: $OCIO is never read otherwise.
+ *   Colour, one rule in every face: the OCIO config of "colorspace-in" and "colorspace-out" is
+ *   the file "ocio-config" names, else the one $OCIO names when it is set, else taa's shipped
+ *   one; the brackets taa_reinhard and taa_log2 are taa's own and work in any config.
  * - The node's input conventions are typed: "motion-y" down|up, "motion-to" previous|next
  *   (strings); "motion-scale", "depth-nohit" (floats); "reset-on-gap" 0/1 (int, default 1:
  *   in history mode, history restarts when a frame is not the previous one + 1, as taatool

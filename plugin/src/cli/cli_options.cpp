@@ -292,12 +292,6 @@ CommandLine parseCommandLine(const std::vector<std::string>& args) {
   return cl;
 }
 
-void useOcioEnvironmentUnlessGiven(CommandLine& cl, const std::vector<std::string>& args) {
-  const bool given = std::find(args.begin(), args.end(), "--ocio-config") != args.end();
-  const char* env = std::getenv("OCIO");
-  if (!given && env && *env) cl.job.resolve.color.ocioConfig = color::kOcioEnvironmentConfig;
-}
-
 void resolveFrameList(CommandLine& cl) {
   const std::string& pattern = cl.job.layout.color.pattern;
   if (!cl.framesText.empty()) {

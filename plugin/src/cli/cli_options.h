@@ -26,11 +26,6 @@ struct CommandLine {
 // Parses argv[1..]. Throws taa::Error with a message naming the offending argument.
 CommandLine parseCommandLine(const std::vector<std::string>& args);
 
-// taatool follows OCIO's own tools: without --ocio-config in `args` and with $OCIO set, the
-// config is the one $OCIO names. (The library and the other faces read $OCIO only when the
-// config is given as "$OCIO".)
-void useOcioEnvironmentUnlessGiven(CommandLine& commandLine, const std::vector<std::string>& args);
-
 // Fills job.frames from --frames or, without it, from the color files found on disk. Frames
 // missing between the first and last found are an error naming the first missing file, unless
 // --skip-missing is given (they are kept in missingFrames for the report). With --frames and

@@ -19,7 +19,6 @@ namespace {
 int run(const std::vector<std::string>& args) {
   using namespace taa;
   cli::CommandLine cl = cli::parseCommandLine(args);
-  cli::useOcioEnvironmentUnlessGiven(cl, args);
   if (cl.help) {
     std::cout << cli::helpText();
     return 0;

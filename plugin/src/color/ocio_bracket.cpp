@@ -107,13 +107,93 @@ OCIO::TransformRcPtr namedTransformIn(const OCIO::ConstNamedTransformRcPtr& name
   return inverted;
 }
 
+// taa's shipped config, parsed once: its working spaces are the brackets every config gets.
+OCIO::ConstConfigRcPtr shippedConfig() {
+  static const OCIO::ConstConfigRcPtr config = [] {
+    std::istringstream text(shippedConfigText());
+    OCIO::ConstConfigRcPtr parsed = OCIO::Config::CreateFromStream(text);
+    parsed->validate();
+    return parsed;
+  }();
+  return config;
+}
+
+// The family of the shipped config's bracket spaces (ocio/config.ocio).
+constexpr const char* kShippedBracketFamily = "taa/working";
+
+// The shipped bracket `name`'s transform from scene-linear values into its working space, or
+// null when `name` is not one. Pure maths (log, matrix), so it runs in any config.
+OCIO::ConstTransformRcPtr shippedBracket(const std::string& name) {
+  OCIO::ConstColorSpaceRcPtr space = shippedConfig()->getColorSpace(name.c_str());
+  if (!space || std::string(space->getFamily()) != kShippedBracketFamily) return nullptr;
+  return space->getTransform(OCIO::COLORSPACE_DIR_FROM_REFERENCE);
+}
+
+bool isShippedBracket(const std::string& name) { return shippedBracket(name) != nullptr; }
+
+std::vector<std::string> shippedBracketNames() {
+  std::vector<std::string> names;
+  const OCIO::ConstConfigRcPtr& config = shippedConfig();
+  for (int i = 0; i < config->getNumColorSpaces(); ++i) {
+    if (isShippedBracket(config->getColorSpaceNameByIndex(i))) {
+      names.push_back(config->getColorSpaceNameByIndex(i));
+    }
+  }
+  return names;
+}
+
+OCIO::TransformRcPtr inverted(const OCIO::ConstTransformRcPtr& transform) {
+  OCIO::TransformRcPtr copy = transform->createEditableCopy();
+  copy->setDirection(OCIO::GetInverseTransformDirection(copy->getDirection()));
+  return copy;
+}
+
+// The colorspaces a bracket converts between, by their names in the config: `linear` is the
+// config's scene_linear, where taa's own brackets work.
+struct Spaces {
+  std::string in, out, linear;
+  bool unmanaged = false;  // no scene_linear role and none asked for: values pass unconverted
+};
+
+// A config without a scene_linear role (OCIO does not require one) still resolves by default:
+// the input is taken as the linear values the bracket expects, output in the same space, as
+// with taa's own config. Naming a colorspace then needs the role, to know where linear is.
+Spaces resolveSpaces(const LoadedConfig& loaded, const ColorOptions& options) {
+  const OCIO::ConstConfigRcPtr& config = loaded.config;
+  const bool shipped = isShippedBracket(options.bracket);
+  const bool defaultSpaces = (shipped || options.bracket == "none") &&
+      options.colorspaceIn == OCIO::ROLE_SCENE_LINEAR &&
+      (options.colorspaceOut.empty() || options.colorspaceOut == OCIO::ROLE_SCENE_LINEAR);
+  const bool hasLinear = config->getColorSpace(OCIO::ROLE_SCENE_LINEAR) != nullptr;
+  if (defaultSpaces && !hasLinear) {
+    return {OCIO::ROLE_SCENE_LINEAR, OCIO::ROLE_SCENE_LINEAR, OCIO::ROLE_SCENE_LINEAR, true};
+  }
+  Spaces spaces;
+  spaces.in = requireColorSpace(loaded, options.colorspaceIn, "input");
+  spaces.out = requireColorSpace(
+      loaded, options.colorspaceOut.empty() ? options.colorspaceIn : options.colorspaceOut,
+      "output");
+  if (shipped) {
+    if (!hasLinear) {
+      throw Error(configError("the bracket \"" + options.bracket + "\" works on scene-linear "
+                              "values, and there is no scene_linear role",
+                              loaded) +
+                  " to convert the colorspaces named to them: add the role to the config, or "
+                  "resolve without a bracket (--bracket none)");
+    }
+    spaces.linear = requireColorSpace(loaded, OCIO::ROLE_SCENE_LINEAR, "scene_linear");
+  }
+  return spaces;
+}
+
 }  // namespace
 
 LoadedConfig loadConfig(const std::string& path) {
   LoadedConfig loaded;
   std::string file = path;
-  if (path == kOcioEnvironmentConfig) {
-    const char* env = std::getenv("OCIO");
+  const char* env = std::getenv("OCIO");
+  const bool environment = path == kOcioEnvironmentConfig || (path.empty() && env && *env);
+  if (environment) {
     if (!env || !*env) {
       throw Error("the OCIO config was asked for from $OCIO, but $OCIO is not set");
     }
@@ -125,12 +205,11 @@ LoadedConfig loadConfig(const std::string& path) {
   try {
     if (file.empty()) {
       loaded.description = "taa's shipped config";
-      std::istringstream text(shippedConfigText());
-      loaded.config = OCIO::Config::CreateFromStream(text);
+      loaded.config = shippedConfig();
     } else {
       loaded.config = OCIO::Config::CreateFromFile(file.c_str());
+      loaded.config->validate();
     }
-    loaded.config->validate();
   } catch (const OCIO::Exception& e) {
     throw Error(std::string("cannot load the OCIO config: ") + e.what(), {file});
   }
@@ -139,28 +218,59 @@ LoadedConfig loadConfig(const std::string& path) {
 
 std::vector<std::string> listBrackets(const OCIO::ConstConfigRcPtr& config) {
   std::vector<std::string> names = {"none"};
+  const std::vector<std::string> shipped = shippedBracketNames();
+  names.insert(names.end(), shipped.begin(), shipped.end());
+  auto add = [&](const std::string& name) {
+    if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+  };
   for (int i = 0; i < config->getNumColorSpaces(); ++i) {
     OCIO::ConstColorSpaceRcPtr space = config->getColorSpace(config->getColorSpaceNameByIndex(i));
-    if (space && !space->isData() && space->getName() != std::string("none")) {
-      names.push_back(space->getName());
-    }
+    if (space && !space->isData()) add(space->getName());
   }
   for (int i = 0; i < config->getNumNamedTransforms(); ++i) {
-    names.push_back(config->getNamedTransformNameByIndex(i));
+    add(config->getNamedTransformNameByIndex(i));
   }
   return names;
+}
+
+OutputColorspace outputColorspace(const ColorOptions& options) {
+  const LoadedConfig loaded = loadConfig(options.ocioConfig);
+  return {resolveSpaces(loaded, options).out, loaded.description};
 }
 
 OcioBracket::OcioBracket(const ColorOptions& options) {
   const LoadedConfig loaded = loadConfig(options.ocioConfig);
   const OCIO::ConstConfigRcPtr& config = loaded.config;
-  const std::string in = requireColorSpace(loaded, options.colorspaceIn, "input");
-  const std::string out = requireColorSpace(
-      loaded, options.colorspaceOut.empty() ? options.colorspaceIn : options.colorspaceOut, "output");
+  const OCIO::ConstTransformRcPtr shipped = shippedBracket(options.bracket);
+  const Spaces spaces = resolveSpaces(loaded, options);
+  const std::string& in = spaces.in;
+  const std::string& out = spaces.out;
 
   OCIO::ConstProcessorRcPtr toWorking, fromWorking, backToInput;
   try {
-    if (options.bracket == "none") {  // no working space: the resolve sees input values
+    if (shipped) {
+      // taa's own maths on the config's scene-linear values: the user's config converts the
+      // input there and back, whatever it calls its spaces.
+      auto chain = [&](const std::string& from, const std::string& to, bool intoWorking) {
+        OCIO::GroupTransformRcPtr group = OCIO::GroupTransform::Create();
+        if (!intoWorking) group->appendTransform(inverted(shipped));
+        if (from != to && !spaces.unmanaged) {
+          auto convert = OCIO::ColorSpaceTransform::Create();
+          convert->setSrc(from.c_str());
+          convert->setDst(to.c_str());
+          group->appendTransform(convert);
+        }
+        if (intoWorking) group->appendTransform(shipped->createEditableCopy());
+        return config->getProcessor(group);
+      };
+      toWorking = chain(in, spaces.linear, true);
+      fromWorking = chain(spaces.linear, out, false);
+      backToInput = chain(spaces.linear, in, false);
+    } else if (options.bracket == "none" && spaces.unmanaged) {
+      toWorking = config->getProcessor(OCIO::GroupTransform::Create());
+      fromWorking = toWorking;
+      backToInput = toWorking;
+    } else if (options.bracket == "none") {  // no working space: the resolve sees input values
       toWorking = config->getProcessor(in.c_str(), in.c_str());
       fromWorking = config->getProcessor(in.c_str(), out.c_str());
       backToInput = toWorking;

@@ -26,14 +26,30 @@ struct LoadedConfig {
 // The ColorOptions::ocioConfig value that means "the config $OCIO names".
 inline constexpr const char* kOcioEnvironmentConfig = "$OCIO";
 
-// Loads the config `ColorOptions::ocioConfig` names: empty is taa's shipped config,
-// kOcioEnvironmentConfig the one $OCIO names, anything else a file. Throws taa::Error naming
-// the file for an unreadable or invalid config, and for "$OCIO" when $OCIO is not set.
+// Loads the config `ColorOptions::ocioConfig` names, the same rule in every face: empty is the
+// config $OCIO names when it is set, else taa's shipped config; kOcioEnvironmentConfig the one
+// $OCIO names; anything else a file. Throws taa::Error naming the file for an unreadable or
+// invalid config, and for "$OCIO" when $OCIO is not set.
 LoadedConfig loadConfig(const std::string& path);
 
-// The bracket names a config offers: its colorspaces (not data spaces) and named transforms.
+// The bracket names a config offers: "none", taa's own brackets (taa_reinhard, taa_log2: the
+// shipped config's working spaces, pure maths that every config gets), then the config's
+// colorspaces (not data spaces) and named transforms.
 std::vector<std::string> listBrackets(const OCIO::ConstConfigRcPtr& config);
 
+// The output's colorspace as the config names it ("ACEScg"; a role resolved to its colorspace)
+// and the config's description ("$OCIO (/studio/config.ocio)"), for the output header.
+// Throws as OcioBracket does.
+struct OutputColorspace {
+  std::string colorspace, config;
+};
+OutputColorspace outputColorspace(const ColorOptions& options);
+
+// The bracket: taa's own brackets (taa_reinhard, taa_log2) work in any config: the input is
+// converted to the config's scene_linear role, the bracket's maths applied, and back to the
+// output colorspace (a config without the role, given no colorspace names, takes the input as
+// linear). Any other name is the config's colorspace or named transform, as before; "none"
+// skips the working space.
 class OcioBracket {
  public:
   // Builds both processors and their GPU shader descriptions. Throws taa::Error naming the

@@ -25,7 +25,6 @@ Shot loadShot(const std::vector<std::string>& taatoolArgs) {
     throw UsageError("a farm job resolves a sequence: the input and -o patterns need a frame "
                      "placeholder (#, @ or %0Nd)");
   }
-  cli::useOcioEnvironmentUnlessGiven(cl, taatoolArgs);
   try {
     cli::resolveFrameList(cl);
   } catch (const Error& e) {

@@ -33,7 +33,7 @@ void updateSequentialRender(OfxImageEffectHandle effect) {
                                   sequentialRender(settings));
 }
 
-// A bracket the chosen config lacks (a studio config has no taa_reinhard) is reported on the
+// A colorspace or bracket the chosen config lacks is reported on the
 // effect as soon as the settings say so, not at the first render.
 void checkColorSettings(OfxImageEffectHandle effect) {
   const std::string problem = colorSettingsProblem(readSettings(effect, 0.0));

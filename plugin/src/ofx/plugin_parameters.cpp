@@ -229,9 +229,10 @@ void defineParameters(OfxParamSetHandle set) {
             "N: from at most N frames back (faster for random access, approximate).",
             0, 0, 100000);
   defineChoice(set, kOcioConfigSource, "OCIO Config",
-               "Config of the tonemap bracket: taa's shipped one (its brackets taa_reinhard and "
-               "taa_log2), the one $OCIO names, or a file. $OCIO is read only when chosen here.",
-               {"taa (shipped)", "$OCIO", "File"});
+               "Config of the input and output colorspaces: the one $OCIO names when it is set, "
+               "else taa's shipped one (as taatool); the one $OCIO names; or a file. The "
+               "brackets taa_reinhard and taa_log2 are taa's own and work in any config.",
+               {"Automatic ($OCIO, else taa's)", "$OCIO", "File"});
   defineString(set, kOcioConfigFile, "OCIO Config File",
                "The OCIO config when OCIO Config is File (taatool --ocio-config).", "", true);
   const taa::ColorOptions color;
@@ -239,9 +240,9 @@ void defineParameters(OfxParamSetHandle set) {
                "Colorspace or role of the Source clip's colour (taatool --colorspace-in).",
                color.colorspaceIn);
   defineString(set, kBracket, "Bracket",
-               "Working space of the resolve: a colorspace or named transform of the config, or "
-               "none (taatool --bracket). A name the config lacks is reported with the names it "
-               "offers.",
+               "Working space of the resolve: taa_reinhard or taa_log2 (taa's own, in any "
+               "config), a colorspace or named transform of the config, or none (taatool "
+               "--bracket). A name the config lacks is reported with the names it offers.",
                color.bracket);
   defineString(set, kColorspaceOut, "Output Colorspace",
                "Colorspace or role of the output (empty: the input's; taatool --colorspace-out).",

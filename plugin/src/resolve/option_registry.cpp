@@ -316,15 +316,16 @@ std::vector<Entry> makeEntries() {
                                   "range"},
                                  0.0f, kNoLimit, &ResolveOptions::sharpen));
   entries.push_back(textOption({"ocio-config", "Tonemap bracket", "", "",
-                                "OCIO config file; empty: taa's shipped config; $OCIO: the one $OCIO names "
-                                "(taatool's default when $OCIO is set)"},
+                                "OCIO config of the input and output colorspaces; empty: the "
+                                "one $OCIO names when set, else taa's shipped config"},
                                &ColorOptions::ocioConfig));
   entries.push_back(textOption({"colorspace-in", "Tonemap bracket", "", "",
-                                "colorspace or role of the input colour"},
+                                "colorspace or role of the input colour (e.g. ACEScg)"},
                                &ColorOptions::colorspaceIn));
   entries.push_back(textOption({"bracket", "Tonemap bracket", "", "",
-                                "working space of the resolve: a colorspace or named transform, "
-                                "or none"},
+                                "working space of the resolve: taa_reinhard or taa_log2 (taa's "
+                                "own, in any config: applied to its scene_linear), a colorspace "
+                                "or named transform of the config, or none"},
                                &ColorOptions::bracket));
   entries.push_back(textOption({"colorspace-out", "Tonemap bracket", "", "",
                                 "colorspace or role of the output (empty: the input's)"},

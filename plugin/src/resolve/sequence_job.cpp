@@ -6,6 +6,7 @@
 #include <optional>
 #include <set>
 
+#include "color/ocio_bracket.h"
 #include "io/camera_sidecar.h"
 #include "io/file_presence.h"
 #include "io/frame_reader.h"
@@ -251,8 +252,10 @@ struct JobRun {
   io::CameraInputs cameras;
   io::WriteOptions write;
   std::string options;
+  color::OutputColorspace colorspace;  // the output's, said in its header
 
-  JobRun(const SequenceJob& j, const JobCallbacks& c) : job(j), callbacks(c) {
+  JobRun(const SequenceJob& j, const JobCallbacks& c)
+      : job(j), callbacks(c), colorspace(color::outputColorspace(j.resolve.color)) {
     if (!job.cameraSidecar.empty()) sidecar = io::CameraSidecar::load(job.cameraSidecar);
     // The note is read unless both the camera and the jitter are given explicitly.
     const bool jitterGiven = job.jitterSource != JobJitterSource::Auto;
@@ -305,6 +308,8 @@ struct JobRun {
     OIIO::ImageSpec spec = data.colorSpec;
     spec.attribute("taa:version", TAA_VERSION_STRING);
     spec.attribute("taa:options", options);
+    spec.attribute("taa:colorspace", colorspace.colorspace);
+    spec.attribute("taa:ocioConfig", colorspace.config);
     io::ExtraChannels extra = passthroughWithout(data.passthrough, write.rgbaNames);
     if (!debug.names.empty()) io::appendExtraChannels(extra, debug);
     return [path = io::expandFramePattern(job.outputPattern, data.frame),
