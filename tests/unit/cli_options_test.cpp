@@ -126,3 +126,50 @@ TEST(CliOptions, ReadmeTableIsTheRegistry) {
 
 }  // namespace
 }  // namespace taa::cli
+
+namespace taa::cli {
+namespace {
+
+// Issue 24: an option that changes nothing is an error naming it and what it needs; before,
+// "--layer RL" without --preset cycles was ignored without a word.
+TEST(CliOptions, OptionsWithoutEffectAreErrors) {
+  const std::vector<std::string> plain = {"b.#.exr", "-o", "o.#.exr"};
+  auto with = [&](std::vector<std::string> extra) {
+    std::vector<std::string> args = plain;
+    args.insert(args.end(), extra.begin(), extra.end());
+    return args;
+  };
+  auto fails = [&](std::vector<std::string> extra, const std::string& fragment) {
+    const std::string message = errorOf(with(extra));
+    EXPECT_NE(message.find(fragment), std::string::npos) << message;
+  };
+  fails({"--layer", "RL"}, "--layer has no effect without --preset cycles");
+  fails({"--preset", "nuke", "--layer", "RL"}, "--layer has no effect without --preset cycles");
+  fails({"--motion-y", "up"}, "--motion-y has no effect without motion vectors");
+  fails({"--depth-kind", "radial"}, "--depth-kind has no effect without depth");
+  fails({"--motion", "m.#.exr", "--motion-max", "2"},
+        "--motion-max has no effect without --motion-encoding centred");
+  fails({"--depth", "d.#.exr", "--depth-near", "0.5"},
+        "--depth-near has no effect without --depth-kind ndc or reversed-z");
+  fails({"--depth", "d.#.exr", "--depth-fov", "40"},
+        "--depth-fov has no effect without --depth-kind radial");
+  fails({"--jitter", "none", "--jitter-offset", "3"},
+        "--jitter-offset has no effect when the jitter is not Halton's");
+  fails({"--jitter", "sidecar", "--camera-sidecar", "c.json", "--jitter-period", "8"},
+        "--jitter-period has no effect");
+
+  // With what they need, each takes effect.
+  for (const auto& extra : std::vector<std::vector<std::string>>{
+           {"--preset", "cycles", "--layer", "RL"},
+           {"--preset", "nuke", "--motion-y", "down", "--depth-nohit", "5"},
+           {"--motion", "m.#.exr", "--motion-encoding", "centred", "--motion-max", "2"},
+           {"--preset", "unreal", "--motion-max", "0.5"},  // the preset's encoding is centred
+           {"--depth-ch", "Z", "--depth-kind", "reversed-z", "--depth-far", "inf"},
+           {"--depth", "d.#.exr", "--depth-kind", "radial", "--depth-fov", "40"},
+           {"--jitter-offset", "3", "--jitter-scale", "0.5"}}) {
+    EXPECT_EQ(errorOf(with(extra)), "") << extra[0];
+  }
+}
+
+}  // namespace
+}  // namespace taa::cli

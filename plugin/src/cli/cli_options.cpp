@@ -7,10 +7,13 @@
 #include <limits>
 #include <functional>
 #include <map>
+#include <set>
 #include <sstream>
 
 #include "cli/input_report.h"
+#include "cli/option_effects.h"
 #include "color/ocio_bracket.h"
+#include "io/nearest_files.h"
 #include "io/renderer_presets.h"
 #include "io/sequence_pattern.h"
 #include "io/sequence_scan.h"
@@ -232,8 +235,10 @@ CommandLine parseCommandLine(const std::vector<std::string>& args) {
       {"--strict", [&] { cl.strict = true; }},
   };
 
+  std::set<std::string> typed;  // the options on the command line, for requireOptionsTakeEffect
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& arg = args[i];
+    if (arg.size() > 1 && arg[0] == '-') typed.insert(arg);
     if (auto flag = flags.find(arg); flag != flags.end()) {
       flag->second();
     } else if (auto option = withValue.find(arg); option != withValue.end()) {
@@ -289,6 +294,7 @@ CommandLine parseCommandLine(const std::vector<std::string>& args) {
   if (!cl.job.outputChannels.empty() && cl.job.outputChannels.size() != 4) {
     throw Error("--out-ch expects 4 channel names (R, G, B, A)");
   }
+  requireOptionsTakeEffect(typed, preset, cl.job);
   return cl;
 }
 
@@ -312,7 +318,10 @@ void resolveFrameList(CommandLine& cl) {
     }
   } else if (io::hasFramePlaceholder(pattern)) {
     cl.job.frames = io::scanExistingFrames(pattern);
-    if (cl.job.frames.empty()) throw Error("no frames found for the color pattern", {pattern});
+    if (cl.job.frames.empty()) {
+      throw Error("no frames found for the color pattern: " + io::patternMissText(pattern),
+                  {pattern});
+    }
     cl.missingFrames.clear();
     for (std::size_t i = 1; i < cl.job.frames.size(); ++i) {
       for (int f = cl.job.frames[i - 1] + 1; f < cl.job.frames[i]; ++f) {
@@ -332,7 +341,9 @@ void resolveFrameList(CommandLine& cl) {
                   {io::expandFramePattern(pattern, first), first, ""});
     }
   } else {
-    cl.job.frames = {0};  // a single file: frame number 0 for jitter unless --frames says
+    // A single file is the frame its name carries (shot.0001.exr: frame 1, for its Halton
+    // jitter and its sidecar entry), else 0; --frames says otherwise.
+    cl.job.frames = {io::frameNumberInFileName(pattern).value_or(0)};
   }
   // The window resolve reads the frames around each resolved one that exist on disk.
   if (cl.job.resolve.mode == ResolveMode::Window && io::hasFramePlaceholder(pattern)) {
@@ -454,8 +465,9 @@ Camera and jitter:
                            note's (docs/ARCHITECTURE.md)
   --jitter header:ATTR     each frame's jitter from the color header's float[2] attribute ATTR
                            in pixels, y down (e.g. header:taa:jitter)
-  --jitter sidecar         each frame's jitter from --camera-sidecar
-                           (--jitter halton|none too: then the camera note's jitter is unused)
+  --jitter sidecar         each frame's jitter from --camera-sidecar, every entry must have one
+                           (without --jitter: the sidecar entry's jitter where it has one, else
+                           the camera note's, else Halton; --jitter halton|none ignores both)
 
 @RESOLVE_OPTIONS@
 Sequences and cuts:

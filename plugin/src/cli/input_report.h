@@ -1,8 +1,10 @@
 // What changed a result without failing the run (issue 17's policy), for taatool and Python's
 // resolve_sequence: NaN/Inf colour or motion set to 0, float colour clamped to a half output's
-// range, a change of image size (history restarts), frames skipped with --skip-missing. Each is
-// tallied for a warning with counts at the end; with --strict each is an error instead, raised
-// before anything of the frame it concerns is written.
+// range, a change of image size (history restarts), frames skipped with --skip-missing, the
+// jitter taken out of a projection that carried it. Each is tallied for a warning with counts
+// at the end; with --strict each is an error instead, raised before anything of the frame it
+// concerns is written. Frames without camera matrices in window mode are warned about with
+// what that costs (issue 24), never an error: many shots have no camera to give.
 #pragma once
 
 #include <optional>
@@ -42,7 +44,8 @@ class InputReport {
   bool strict_ = false;
   std::string colorChannels_, motionChannels_;
   std::vector<int> skipped_;
-  Tally nonFiniteColor_, nonFiniteMotion_, clampedColor_, sizeChanges_;
+  Tally nonFiniteColor_, nonFiniteMotion_, clampedColor_, sizeChanges_, noCamera_,
+      projectionJitter_;
   std::optional<std::pair<int, int>> lastSize_;
 };
 

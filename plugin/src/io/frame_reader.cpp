@@ -18,6 +18,7 @@
 #include "io/aov_conversion.h"
 #include "io/camera_note.h"
 #include "io/file_presence.h"
+#include "io/layout_hint.h"
 #include "io/part_channels.h"
 #include "io/sequence_pattern.h"
 #include "taa/error.h"
@@ -151,8 +152,10 @@ std::vector<int> channelIndices(const OpenExr& file, int part,
       available += (i == 0 ? " (part " : "; part ") + partName(file.parts[i]) + ": " +
                    joinNames(file.parts[i].channelnames) + (i + 1 == file.parts.size() ? ")" : "");
     }
+    const std::string hint = layoutHint(spec, missing);
     throw Error("the " + aovName + " file lacks channel" + (missing.size() > 1 ? "s " : " ") +
-                    joinNames(missing) + "; channels available: " + available,
+                    joinNames(missing) + (hint.empty() ? "" : "; " + hint) +
+                    "; channels available: " + available,
                 {file.path, frame, joinNames(missing)});
   }
   return indices;

@@ -35,6 +35,9 @@ struct FrameData {
   CameraOrigin cameraOrigin = CameraOrigin::None;  // which of those `camera` came from
   NdcConvention ndc = NdcConvention::ZeroOneYDown;  // the convention of camera->worldToNdc
   std::optional<glm::vec2> noteJitter;  // the color header's camera note's jitter, if it has one
+  // Set by the sequence job: `camera`'s projection carried the frame's jitter, now taken out
+  // (resolve/projection_jitter.h).
+  bool jitterTakenOutOfProjection = false;
   RasterWindow window;            // the data window's place in the display window
   OIIO::ImageSpec colorSpec;      // the color part's header: windows and metadata for output
   std::string colorPath;

@@ -56,6 +56,22 @@ std::optional<int> frameOfFileName(const std::string& pattern, const std::string
   return frame;
 }
 
+std::optional<int> frameNumberInFileName(const std::string& path) {
+  const std::string name = std::filesystem::path(path).filename().string();
+  const std::size_t extension = name.rfind('.');
+  if (extension == std::string::npos || extension == 0) return std::nullopt;
+  std::size_t begin = extension;
+  while (begin > 0 && std::isdigit(static_cast<unsigned char>(name[begin - 1]))) --begin;
+  if (begin == extension) return std::nullopt;
+  if (begin > 0 && name[begin - 1] == '-') --begin;
+  if (begin == 0 || (name[begin - 1] != '.' && name[begin - 1] != '_')) return std::nullopt;
+  const std::string number = name.substr(begin, extension - begin);
+  if (number.size() > (number[0] == '-' ? 11u : 10u)) return std::nullopt;
+  const long long value = std::stoll(number);
+  if (value < INT_MIN || value > INT_MAX) return std::nullopt;
+  return int(value);
+}
+
 std::vector<int> scanExistingFrames(const std::string& pattern) {
   if (!hasFramePlaceholder(pattern)) return {};
   namespace fs = std::filesystem;

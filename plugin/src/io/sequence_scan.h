@@ -16,4 +16,10 @@ std::vector<int> scanExistingFrames(const std::string& pattern);
 // as scanExistingFrames. Nothing for a pattern without a placeholder.
 std::optional<int> frameOfFileName(const std::string& pattern, const std::string& fileName);
 
+// The frame number a single file's name carries, as renderers and oiiotool write it: a run of
+// digits (an optional '-' before it) after a '.' or '_' and right before the extension
+// ("shot.0001.exr": 1, "beauty_1001.exr": 1001). Nothing for a name without one ("shot.exr",
+// "take2.exr") or a number beyond int.
+std::optional<int> frameNumberInFileName(const std::string& path);
+
 }  // namespace taa::io

@@ -10,11 +10,13 @@
 #include "io/camera_sidecar.h"
 #include "io/file_presence.h"
 #include "io/frame_reader.h"
+#include "io/nearest_files.h"
 #include "io/sequence_pattern.h"
 #include "io/sequence_scan.h"
 #include "io/stale_temp_files.h"
 #include "resolve/jitter.h"
 #include "resolve/option_registry.h"
+#include "resolve/projection_jitter.h"
 #include "resolve/frame_queues.h"
 #include "resolve/resolver.h"
 #include "resolve/window_plan.h"
@@ -78,6 +80,7 @@ glm::vec2 jitterOf(const SequenceJob& job, const io::FrameData& data,
                    const io::CameraSidecar* sidecar) {
   switch (job.jitterSource) {
     case JobJitterSource::Auto:
+      if (sidecar && sidecar->frame(data.frame).jitter) return *sidecar->frame(data.frame).jitter;
       return data.noteJitter ? *data.noteJitter : frameJitter(data.frame, job.resolve.jitter);
     case JobJitterSource::Options: return frameJitter(data.frame, job.resolve.jitter);
     case JobJitterSource::Sidecar: return sidecar->jitter(data.frame);
@@ -96,7 +99,8 @@ glm::vec2 jitterOf(const SequenceJob& job, const io::FrameData& data,
 }
 
 // Where a frame's camera and jitter came from, for verbose output.
-std::string cameraSourceText(const SequenceJob& job, const io::FrameData& data) {
+std::string cameraSourceText(const SequenceJob& job, const io::FrameData& data,
+                             const io::CameraSidecar* sidecar) {
   std::string camera;
   switch (data.cameraOrigin) {
     case io::CameraOrigin::Sidecar: camera = "the camera sidecar"; break;
@@ -109,8 +113,13 @@ std::string cameraSourceText(const SequenceJob& job, const io::FrameData& data) 
   const bool halton = job.resolve.jitter.source == JitterSource::Halton;
   switch (job.jitterSource) {
     case JobJitterSource::Auto:
-      jitter = data.noteJitter ? "the color header's camera note"
-                               : halton ? "Halton(2,3) (no camera note)" : "none (no camera note)";
+      if (sidecar && sidecar->frame(data.frame).jitter) {
+        jitter = "the camera sidecar";
+      } else {
+        jitter = data.noteJitter ? "the color header's camera note"
+                 : halton        ? "Halton(2,3) (no camera note or sidecar jitter)"
+                                 : "none (no camera note or sidecar jitter)";
+      }
       break;
     case JobJitterSource::Options: jitter = halton ? "Halton(2,3)" : "none"; break;
     case JobJitterSource::HeaderAttribute: jitter = "the header attribute " + job.jitterAttribute;
@@ -227,7 +236,8 @@ void validateSequenceJob(const SequenceJob& job) {
   for (int frame : job.frames) {
     for (const InputFile& input : frameInputFiles(job.layout, frame)) {
       if (const std::string absence = io::fileAbsence(input.path); !absence.empty()) {
-        throw Error(absence == "missing" ? "missing input frame" : "input frame is " + absence,
+        throw Error(absence == "missing" ? "missing input frame: " + io::patternMissText(input.path)
+                                         : "input frame is " + absence,
                     {input.path, frame, input.aov});
       }
       inputs.insert(canonical(input.path));
@@ -265,7 +275,18 @@ struct JobRun {
     options = outputOptionsAttribute(job);
   }
 
-  io::FrameData read(int frame) const { return io::readFrame(job.layout, frame, cameras); }
+  // Reads a frame; a projection that carries the frame's jitter gets it taken out.
+  io::FrameData read(int frame) const {
+    io::FrameData data = io::readFrame(job.layout, frame, cameras);
+    if (data.camera) {
+      const glm::vec2 jitter = jitterOf(job, data, sidecar ? &*sidecar : nullptr);
+      if (auto corrected = withoutJitterInProjection(*data.camera, jitter, data.window, data.ndc)) {
+        data.camera = *corrected;
+        data.jitterTakenOutOfProjection = true;
+      }
+    }
+    return data;
+  }
 
   ResolveInput inputOf(const io::FrameData& data) const {
     tellCameraSource(data);
@@ -285,7 +306,8 @@ struct JobRun {
   mutable std::string lastCameraSource;
   void tellCameraSource(const io::FrameData& data) const {
     if (!callbacks.detail) return;
-    std::string source = cameraSourceText(job, data);
+    std::string source = cameraSourceText(job, data, sidecar ? &*sidecar : nullptr);
+    if (data.jitterTakenOutOfProjection) source += " (the jitter taken out of the projection)";
     if (source == lastCameraSource) return;
     callbacks.detail("frame " + std::to_string(data.frame) + ": " + source);
     lastCameraSource = std::move(source);
@@ -336,6 +358,8 @@ struct JobRun {
     report.height = data.color.height();
     report.nonFiniteColorValues = data.nonFiniteColorValues;
     report.nonFiniteMotionValues = data.nonFiniteMotionValues;
+    report.jitterTakenOutOfProjection = data.jitterTakenOutOfProjection;
+    report.noCamera = job.resolve.mode == ResolveMode::Window && !data.camera;
     const SampleType outputType = io::outputSampleType(write, data.colorSpec);
     report.clampedColorValues = outputType == SampleType::Half ? data.colorValuesBeyondHalf : 0;
     return report;

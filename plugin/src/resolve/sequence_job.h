@@ -18,10 +18,11 @@
 
 namespace taa {
 
-// Where each frame's jitter comes from. Auto: the color header's camera note (io/camera_note.h)
-// where the frame has one, else the resolve options'; Options: the resolve options'
-// JitterOptions (Halton or none); HeaderAttribute: a float[2] attribute of the color header
-// (pixels, x right, y down); Sidecar: the camera sidecar's "jitter" entry.
+// Where each frame's jitter comes from. Auto: the camera sidecar's "jitter" where its entry has
+// one, else the color header's camera note's (io/camera_note.h) where the frame has one, else
+// the resolve options'; Options: the resolve options' JitterOptions (Halton or none), whatever
+// the files hold; HeaderAttribute: a float[2] attribute of the color header (pixels, x right,
+// y down); Sidecar: the camera sidecar's "jitter" entry, required for every frame.
 enum class JobJitterSource { Auto, Options, HeaderAttribute, Sidecar };
 
 struct SequenceJob {
@@ -74,6 +75,11 @@ struct FrameReport {
                               // size change)
   bool cutDetected = false;   // cut detection reset history on this frame
   bool preroll = false;       // resolved for history only, nothing written (prerollFrames)
+  // Window mode: the frame has no camera matrices (header, note or sidecar), so its samples
+  // follow their motion vectors only, without exact camera reprojection.
+  bool noCamera = false;
+  // The frame's projection carried its jitter, which was taken out (resolve/projection_jitter).
+  bool jitterTakenOutOfProjection = false;
 };
 
 struct JobCallbacks {
