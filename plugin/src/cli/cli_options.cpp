@@ -497,8 +497,9 @@ GL and diagnostics:
   --info                   print GL vendor/renderer/version, OCIO and OIIO versions
   --list-brackets          list the tonemap brackets the active OCIO config offers
   --list-options           the resolve options as a Markdown table
-  -v                       one line per frame
-  -q                       errors only
+  -v                       one line per frame on stdout, with the rate and time left
+  -q                       errors only (default: progress on stderr, one line rewritten on a
+                           terminal, a line per frame otherwise, with the rate and time left)
   -h, --help               this text
 
 Errors are printed as "taatool ERROR: <what> : <file> (frame N, channel C)"; exit status 1.

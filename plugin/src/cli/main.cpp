@@ -1,14 +1,18 @@
 // taatool: resolve a jittered EXR AOV sequence into an anti-aliased one (oiiotool-style CLI).
 // All failures end here: "taatool ERROR: ..." on stderr and exit status 1 (128 + the signal's
 // number when SIGINT or SIGTERM stopped the run).
+#include <unistd.h>
+
 #include <csignal>
 #include <iostream>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "cli/cli_options.h"
 #include "cli/info.h"
 #include "cli/input_report.h"
+#include "cli/progress_line.h"
 #include "fast_zlib/fast_zlib.h"
 #include "taa/error.h"
 #include "util/frame_memory.h"
@@ -44,6 +48,10 @@ int run(const std::vector<std::string>& args) {
 
   const StopSignals stopSignals;  // SIGINT/SIGTERM stop the run between frames
   cli::resolveFrameList(cl);
+  // Frames done, rate and time left on stderr: one line rewritten on a terminal, a line per
+  // frame in a log; -v puts them on its per-frame lines instead, -q prints none.
+  std::optional<cli::ProgressLine> progress;
+  if (!quiet) progress.emplace(std::cerr, isatty(STDERR_FILENO) == 1);
   cli::InputReport inputReport(cl);
   JobCallbacks callbacks;
   callbacks.log = log;
@@ -52,9 +60,11 @@ int run(const std::vector<std::string>& args) {
     inputReport.frameRead(report);
   };
   callbacks.stopRequested = [] { return StopSignals::received() != 0; };
-  callbacks.frameDone = [verbose](const FrameReport& report) {
-    if (!verbose) return;
-    std::cout << "frame " << report.frame << " (" << report.index + 1 << "/" << report.count
+  callbacks.frameDone = [verbose, &progress](const FrameReport& report) {
+    if (!progress) return;
+    if (!verbose) return progress->frameDone(report.frame, report.index + 1, report.count);
+    std::cout << "frame " << report.frame << " (" << progress->textNow(report.index + 1,
+                                                                        report.count)
               << "): " << report.inputPath << " -> " << report.outputPath;
     if (report.sizeChanged) {
       std::cout << " [new size " << report.width << "x" << report.height << ": history reset]";
@@ -74,6 +84,7 @@ int run(const std::vector<std::string>& args) {
     std::cout << std::endl;
   };
   runSequenceJob(cl.job, callbacks);
+  if (progress) progress->finish();
   if (!quiet) {
     for (const std::string& warning : inputReport.warnings()) {
       std::cerr << "taatool WARNING: " << warning << "\n";
