@@ -9,7 +9,10 @@
 #include <utility>
 #include <vector>
 
+#include "capi/node_parameters.h"
+#include "python_doc.h"
 #include "python_error.h"
+#include "resolve/option_registry.h"
 #include "taa/taa.h"
 
 namespace py = pybind11;
@@ -242,17 +245,27 @@ class Node {
   std::pair<int, int> frameShape_{0, 0};  // window mode: height, width of the pushed frames
 };
 
+// The class documentation: what a node is, then every parameter from the option registry and
+// the node's own table (so it cannot drift from what the node accepts).
+std::string nodeDoc() {
+  return R"doc(A resolve node with its own OpenGL context, on the C ABI.
+
+Node(gl="auto", **parameters): parameters by taatool's option names with '_' for '-', e.g.
+Node(preset="cycles", camera_sidecar="camera.json", blend=0.1). History mode by default: push()
+resolves each frame. mode="window", window=K: push() puts frames into a ring of 2K+1 and
+returns None; resolve(t) rebuilds frame t from the pushed frames within K of it (taatool
+--mode window), in any order. One thread at a time per node; different nodes may run in
+parallel threads.
+
+)doc" + optionsDoc("Resolve options (taatool's --NAME):", resolveOptionList()) + "\n" +
+         optionsDoc("Input conventions and the node's own:", capi::nodeInputParameterInfo());
+}
+
 }  // namespace
 
 void registerNode(py::module_& module) {
-  py::class_<Node>(module, "Node", R"doc(A resolve node with its own OpenGL context.
-
-Node(gl="auto", **parameters): parameters by taatool's option names with '_' for '-' (taa.h;
-`taatool --list-options`), e.g. blend=0.1, jitter="none", jitter_offset=-1000, rectify="clip",
-motion_y="up", motion_to="next", motion_scale=0.5, depth_nohit=1e9, reset_on_gap=1.
-mode="window", window=K: push() puts frames into a ring of 2K+1 and returns None; resolve(t)
-rebuilds frame t from the pushed frames within K of it (taatool --mode window), in any order.
-One thread at a time per node; different nodes may run in parallel threads.)doc")
+  static const std::string doc = nodeDoc();
+  py::class_<Node>(module, "Node", doc.c_str())
       .def(py::init<const std::string&, const py::kwargs&>(), py::arg("gl") = "auto")
       .def("set", &Node::set, py::arg("name"), py::arg("value"),
            "Sets one parameter (see the class doc); raises taa.Error naming a bad one.")

@@ -6,7 +6,9 @@
 
 #include "cli/cli_options.h"
 #include "cli/input_report.h"
+#include "python_doc.h"
 #include "python_error.h"
+#include "resolve/option_registry.h"
 #include "resolve/sequence_job.h"
 #include "taa/error.h"
 #include "util/interruption.h"
@@ -61,15 +63,16 @@ std::vector<std::string> commandLine(const py::object& color, const py::kwargs& 
       continue;
     }
     if (value.is_none()) continue;
-    if (key == "clip" || key == "dilate") {  // taatool has only the negative flags
-      if (!value.cast<bool>()) args.push_back("--no-" + key);
-      continue;
-    }
     std::string flag = "--" + key;
     for (char& c : flag) c = c == '_' ? '-' : c;
     if (auto special = specialFlag(key)) flag = *special;
     if (py::isinstance<py::bool_>(value)) {
-      if (value.cast<bool>()) args.push_back(flag);
+      if (value.cast<bool>()) {
+        args.push_back(flag);
+      } else if (!cli::isSwitchOption(flag)) {  // False leaves a switch out; anything else
+        throw Error("unknown option " + flag + " (see taatool --help; given as " + key +
+                    "=False)");
+      }
     } else if (key == "frames") {
       args.insert(args.end(), {flag, framesText(value)});
     } else if (isPathLike(value)) {
@@ -158,24 +161,29 @@ py::list resolveSequence(const py::object& color, const py::kwargs& kwargs) {
   return reports;
 }
 
+// The function's documentation: how it runs, then every keyword, from taatool's own option
+// tables (the option registry and --help), so it names exactly what the parser takes.
+std::string resolveSequenceDoc() {
+  return R"doc(Resolves an EXR sequence exactly as taatool does and returns one dict per frame.
+
+resolve_sequence(color, **options): color is taatool's COLOR_PATTERN; every keyword is a
+taatool option with '_' for '-' (a flag as True), e.g. output="out.####.exr" (-o),
+frames="1-24" or [1, 2, 3], pixel_type="float" (-d), preset="cycles",
+camera_sidecar="camera.json", skip_missing=True, strict=True.
+progress: a callable given each frame's dict after the frame is written.
+What changed the result silently is reported as RuntimeWarning with counts, as taatool's
+warnings (strict=True: an error instead). Ctrl-C stops between frames: frames written are
+complete, KeyboardInterrupt follows. Raises taa.Error with taatool's message (file, frame,
+channel) on any failure, an unknown keyword included.
+
+)doc" + sequenceOptionsDoc() + "\n" + optionsDoc("Resolve options:", resolveOptionList());
+}
+
 }  // namespace
 
 void registerResolveSequence(py::module_& module) {
-  module.def("resolve_sequence", &resolveSequence, py::arg("color"),
-             R"doc(Resolves an EXR sequence exactly as taatool does and returns one dict per frame.
-
-Keyword arguments are taatool's options with '-' written '_':
-  output="out.####.exr" (-o), frames="1-24" or [1, 2, 3], depth=, motion=, color_ch=,
-  depth_ch=, motion_ch=, preset="cycles", layer=, motion_y="up", motion_to="next",
-  motion_scale=, depth_nohit=, jitter="none", jitter_offset=, jitter_period=, blend=,
-  clip=False (--no-clip), dilate=False (--no-dilate), pixel_type="float" (-d),
-  compression=, gl="osmesa"; any other taatool option by its name.
-  skip_missing=True (resolve around gaps in the frames found), strict=True (what would change
-  the result silently is an error instead: NaN/Inf set to 0, values clamped, a size change).
-progress: a callable given each frame's dict after the frame is written.
-What changed the result silently is reported as RuntimeWarning with counts, as taatool's
-warnings. Ctrl-C stops between frames: frames written are complete, KeyboardInterrupt follows.
-Raises taa.Error with taatool's message (file, frame, channel) on any failure.)doc");
+  static const std::string doc = resolveSequenceDoc();
+  module.def("resolve_sequence", &resolveSequence, py::arg("color"), doc.c_str());
 }
 
 }  // namespace taa::python

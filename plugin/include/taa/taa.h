@@ -153,13 +153,20 @@ TAA_API const char* taa_node_last_error(const taa_node* node);
  *   Colour, one rule in every face: the OCIO config of "colorspace-in" and "colorspace-out" is
  *   the file "ocio-config" names, else the one $OCIO names when it is set, else taa's shipped
  *   one; the brackets taa_reinhard and taa_log2 are taa's own and work in any config.
- * - The node's input conventions are typed: "motion-y" down|up, "motion-to" previous|next
- *   (strings); "motion-scale", "depth-nohit" (floats); "reset-on-gap" 0/1 (int, default 1:
- *   in history mode, history restarts when a frame is not the previous one + 1, as taatool
- *   does); "ndc" zero-one-y-down|minus-one-one-y-up (string: what world_to_ndc maps to);
- *   "output-type" float|half (string, default float: the type the result is read back from
- *   the GPU in; half suits half output buffers: half the read-back, no conversion, the same
- *   values a float read-back narrowed gives).
+ * - The node's input conventions are typed, taatool's flags of the same names: "preset"
+ *   (string: a renderer's motion and depth conventions, e.g. "cycles"; the host picks the
+ *   channels; "" for taa's own), "motion-y" down|up, "motion-to" previous|next,
+ *   "motion-units" pixels|ndc|uv, "motion-encoding" signed|centred (strings);
+ *   "motion-scale", "motion-max" (floats); "depth-kind" planar|radial|ndc|reversed-z|inverse
+ *   (string; radial needs the frame's camera or "depth-fov"); "depth-near", "depth-far",
+ *   "depth-fov", "depth-nohit" (floats); "camera-sidecar" (string: taatool's JSON sidecar;
+ *   a frame pushed without world_to_camera/world_to_ndc takes its entry's camera, without a
+ *   jitter its entry's jitter; a frame without an entry is TAA_ERROR_INVALID_ARGUMENT);
+ *   "reset-on-gap" 0/1 (int, default 1: in history mode, history restarts when a frame is
+ *   not the previous one + 1, as taatool does); "ndc" zero-one-y-down|minus-one-one-y-up
+ *   (string: what world_to_ndc maps to); "output-type" float|half (string, default float:
+ *   the type the result is read back from the GPU in; half suits half output buffers: half
+ *   the read-back, no conversion, the same values a float read-back narrowed gives).
  * An unknown name gives TAA_ERROR_UNKNOWN_PARAMETER, a typed parameter set with another type
  * TAA_ERROR_WRONG_TYPE, a value out of range TAA_ERROR_INVALID_ARGUMENT; the message names the
  * parameter. Changes apply from the next pushed frame (window mode: the next push or resolve). */

@@ -191,10 +191,15 @@ TypedImage importColor(const taa_buffer& buffer, int* nonFinite) {
 }
 
 Image importDepth(const taa_buffer& buffer, const io::DepthConvention& convention,
-                  int expectWidth, int expectHeight) {
+                  int expectWidth, int expectHeight, const io::PixelRay* ray) {
   Image depth = readChannels(describe(buffer, "depth", 1, 1, expectWidth, expectHeight));
   if (convention.kind == io::DepthKind::Radial) {
-    invalid("radial depth needs the pixel rays; give planar depth to the C ABI");
+    if (!ray) {
+      invalid("radial depth needs the pixel rays: the frame's camera (world_to_camera and "
+              "world_to_ndc, or the camera-sidecar parameter) or the depth-fov parameter");
+    }
+    io::radialToPlanar(depth, *ray, convention.noHitAbove);  // as io::readFrame does
+    return depth;
   }
   io::convertDepth(depth, convention);  // the same code io::readFrame runs on files
   return depth;

@@ -5,6 +5,7 @@
 // being widened on the CPU (the resolve samples the same values either way).
 #pragma once
 
+#include "io/aov_conversion.h"
 #include "io/aov_layout.h"
 #include "taa/taa.h"
 #include "util/image.h"
@@ -18,9 +19,10 @@ namespace taa::capi {
 // 3 or 4 channels -> RGBA (missing A = 1), NaN/Inf -> 0 (counted in *nonFinite if given);
 // half for a half buffer, else float.
 TypedImage importColor(const taa_buffer& buffer, int* nonFinite = nullptr);
-// 1 channel -> planar depth per `convention` (io::convertDepth); radial depth is refused.
+// 1 channel -> planar depth per `convention` (io::convertDepth); radial depth along `ray`
+// (io::radialToPlanar), refused without one.
 Image importDepth(const taa_buffer& buffer, const io::DepthConvention& convention,
-                  int expectWidth, int expectHeight);
+                  int expectWidth, int expectHeight, const io::PixelRay* ray = nullptr);
 // 2 channels -> pixels, y down, to the previous frame, per `convention` (io::convertMotion,
 // the buffer being the whole display window); NaN/Inf -> 0.
 Image importMotion(const taa_buffer& buffer, const io::MotionConvention& convention,

@@ -8,6 +8,7 @@
 
 #include "capi/buffer_conversion.h"
 #include "capi/status_error.h"
+#include "io/aov_conversion.h"
 #include "gl/caller_context.h"
 #include "resolve/jitter.h"
 #include "taa/error.h"
@@ -107,33 +108,67 @@ void Node::pushFrame(const taa_frame& frame) {
   }
   const TypedImage color = importColor(*frame.color);
   const int width = color.width(), height = color.height();
-  Image depth, motion;
-  if (frame.depth) depth = importDepth(*frame.depth, parameters_.depth, width, height);
-  if (frame.motion) motion = importMotion(*frame.motion, parameters_.motion, width, height);
 
+  // The camera sidecar's entry serves what the host did not give (taatool's rule: the host's
+  // matrices and jitter, like explicit flags, win).
+  const bool hostCamera = frame.world_to_camera && frame.world_to_ndc;
+  const io::SidecarFrame* entry = nullptr;
+  if (parameters_.cameraSidecar && (!hostCamera || !frame.has_jitter)) {
+    try {
+      entry = &parameters_.cameraSidecar->frame(frame.frame);
+    } catch (const Error& e) {
+      throw StatusError(TAA_ERROR_INVALID_ARGUMENT, e.what());
+    }
+  }
   ResolveInput input;
-  input.color = &color;
-  input.depth = frame.depth ? &depth : nullptr;
-  input.motion = frame.motion ? &motion : nullptr;
-  input.jitter = frame.has_jitter ? glm::vec2(frame.jitter[0], frame.jitter[1])
-                                  : frameJitter(frame.frame, parameters_.resolve.jitter);
+  const RasterWindow whole{0, 0, width, height};  // a host buffer is the whole image
+  input.jitter = frame.has_jitter                ? glm::vec2(frame.jitter[0], frame.jitter[1])
+                 : entry && entry->jitter        ? *entry->jitter
+                                                 : frameJitter(frame.frame, parameters_.resolve.jitter);
   // Row-major row-vector matrices (EXR) read column-major are GLM's column-vector ones.
   FrameCamera camera;
-  if (frame.world_to_camera && frame.world_to_ndc) {
-    camera.worldToCamera = glm::dmat4(glm::make_mat4(frame.world_to_camera));
-    camera.worldToNdc = glm::dmat4(glm::make_mat4(frame.world_to_ndc));
-    input.camera = &camera;
-    input.window.displayWidth = width;
-    input.window.displayHeight = height;
-    input.ndc = parameters_.ndc;
-  }
   auto keep = [](const float* matrix) -> std::optional<std::array<float, 16>> {
     if (!matrix) return std::nullopt;
     std::array<float, 16> copy;
     std::copy(matrix, matrix + 16, copy.begin());
     return copy;
   };
-  const FrameMatrices matrices{keep(frame.world_to_camera), keep(frame.world_to_ndc)};
+  // What taa_node_get_camera gives back: the host's matrices as given, or the sidecar's in
+  // the same row-major layout.
+  std::optional<std::array<float, 16>> toCamera = keep(frame.world_to_camera);
+  std::optional<std::array<float, 16>> toNdc = keep(frame.world_to_ndc);
+  if (hostCamera) {
+    camera.worldToCamera = glm::dmat4(glm::make_mat4(frame.world_to_camera));
+    camera.worldToNdc = glm::dmat4(glm::make_mat4(frame.world_to_ndc));
+    input.camera = &camera;
+    input.ndc = parameters_.ndc;
+  } else if (entry && entry->camera) {
+    camera = *entry->camera;
+    input.camera = &camera;
+    input.ndc = io::CameraSidecar::kNdc;
+    toCamera.emplace();
+    toNdc.emplace();
+    const glm::mat4 c(camera.worldToCamera), n(camera.worldToNdc);
+    std::copy_n(glm::value_ptr(c), 16, toCamera->begin());
+    std::copy_n(glm::value_ptr(n), 16, toNdc->begin());
+  }
+  if (input.camera) input.window = whole;
+  const FrameMatrices matrices{toCamera, toNdc};
+
+  Image depth, motion;
+  if (frame.depth) {
+    std::optional<io::PixelRay> ray;
+    if (input.camera) {
+      ray = io::cameraPixelRay(camera, whole, input.ndc);
+    } else if (parameters_.depth.horizontalFovDegrees) {
+      ray = io::pinholePixelRay(*parameters_.depth.horizontalFovDegrees, whole);
+    }
+    depth = importDepth(*frame.depth, parameters_.depth, width, height, ray ? &*ray : nullptr);
+  }
+  if (frame.motion) motion = importMotion(*frame.motion, parameters_.motion, width, height);
+  input.color = &color;
+  input.depth = frame.depth ? &depth : nullptr;
+  input.motion = frame.motion ? &motion : nullptr;
 
   const auto current = bindContext();
   if (windowMode()) {

@@ -3,9 +3,13 @@
 // files, which the node applies to host buffers.
 #pragma once
 
+#include <memory>
 #include <string>
+#include <vector>
 
 #include "io/aov_layout.h"
+#include "io/camera_sidecar.h"
+#include "resolve/option_registry.h"
 #include "resolve/camera.h"
 #include "taa/options.h"
 #include "util/image.h"
@@ -29,7 +33,16 @@ struct NodeParameters {
   // The type the result is read back from GL in. Half halves the read-back and skips the
   // conversion for hosts with half output buffers; float keeps the full result for any buffer.
   SampleType outputType = SampleType::Float;
+  std::string preset;  // the renderer preset whose conventions were set last ("" none)
+  // The camera sidecar (taatool's --camera-sidecar): frames pushed without matrices take
+  // their entry's camera, without a jitter their entry's jitter. Null: none.
+  std::string cameraSidecarPath;
+  std::shared_ptr<const io::CameraSidecar> cameraSidecar;
 };
+
+// The node's own parameters (not the registry's resolve options), in documented order: name,
+// type ("int", "float", "string") in `topic`, values, default as text, help.
+const std::vector<OptionInfo>& nodeInputParameterInfo();
 
 // Names are taatool's option names ('_' may stand for '-'). Resolve options (the registry of
 // resolve/option_registry.h) accept any of the three types, converted to taatool's text; the

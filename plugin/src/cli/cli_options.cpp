@@ -236,6 +236,9 @@ CommandLine parseCommandLine(const std::vector<std::string>& args) {
   };
 
   std::set<std::string> typed;  // the options on the command line, for requireOptionsTakeEffect
+  for (const auto& flag : flags) {
+    if (!isSwitchOption(flag.first)) throw std::logic_error("switch " + flag.first + " unlisted");
+  }
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& arg = args[i];
     if (arg.size() > 1 && arg[0] == '-') typed.insert(arg);
@@ -296,6 +299,13 @@ CommandLine parseCommandLine(const std::vector<std::string>& args) {
   }
   requireOptionsTakeEffect(typed, preset, cl.job);
   return cl;
+}
+
+bool isSwitchOption(const std::string& option) {
+  static const std::set<std::string> switches = {
+      "--help", "-h",  "--info", "--list-brackets", "--list-options", "-v",
+      "-q",     "--debug-layers", "--skip-missing", "--strict"};
+  return switches.count(option) > 0;
 }
 
 void resolveFrameList(CommandLine& cl) {
@@ -429,8 +439,9 @@ AOVs and channels:
   --motion PATTERN         motion-vector files (default: none; the color file if --motion-ch)
   --motion-ch X,Y          motion channel names (default X,Y)
   --color-part NAME        multi-part EXR: the part holding color (default: the first part
-  --depth-part NAME        that has the channels); --depth-part, --motion-part likewise
-  --motion-part NAME
+                           that has the channels)
+  --depth-part NAME        multi-part EXR: the part holding depth (likewise)
+  --motion-part NAME       multi-part EXR: the part holding motion (likewise)
   --preset NAME            a renderer's channel names and conventions, NAME one of
                            @PRESETS@.
                            Every channel or convention flag overrides the preset field by

@@ -26,6 +26,10 @@ struct CommandLine {
 // Parses argv[1..]. Throws taa::Error with a message naming the offending argument.
 CommandLine parseCommandLine(const std::vector<std::string>& args);
 
+// True for an option that takes no value ("--strict", "-v"): Python's resolve_sequence checks
+// that a keyword given False names one, which it then leaves out.
+bool isSwitchOption(const std::string& option);
+
 // Fills job.frames from --frames or, without it, from the color files found on disk. Frames
 // missing between the first and last found are an error naming the first missing file, unless
 // --skip-missing is given (they are kept in missingFrames for the report). With --frames and
