@@ -77,7 +77,10 @@ ToolRun runProgram(const std::string& program, const std::vector<std::string>& a
 
 void expectToolError(const ToolRun& run, const std::vector<std::string>& fragments) {
   EXPECT_EQ(run.exitCode, 1) << run.err;
-  EXPECT_EQ(run.err.rfind("taatool ERROR: ", 0), 0u) << run.err;
+  // The error is the last line (progress lines may come before it when stderr is no terminal).
+  const std::size_t at = run.err.rfind("taatool ERROR: ");
+  EXPECT_TRUE(at != std::string::npos && (at == 0 || run.err[at - 1] == '\n')) << run.err;
+  EXPECT_EQ(run.err.find('\n', at), run.err.size() - 1) << run.err;
   for (const auto& f : fragments) {
     EXPECT_NE(run.err.find(f), std::string::npos) << f << " in " << run.err;
   }

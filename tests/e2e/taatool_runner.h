@@ -26,8 +26,8 @@ ToolRun runTaatool(const std::vector<std::string>& args, const std::filesystem::
 ToolRun runProgram(const std::string& program, const std::vector<std::string>& args,
                    const std::filesystem::path& scratch);
 
-// Expects a failure as taatool reports one: exit status 1, stderr starting "taatool ERROR: ",
-// and each of `fragments` in the message.
+// Expects a failure as taatool reports one: exit status 1, stderr's last line starting
+// "taatool ERROR: " (progress lines may come before it), and each of `fragments` in it.
 void expectToolError(const ToolRun& run, const std::vector<std::string>& fragments);
 
 // Frames [first, last] of the scene generator's `scene` at width x height written into `folder`

@@ -79,7 +79,7 @@ TEST_F(TaatoolTest, ResolvesSeparateFilesIntoRgbaExrKeepingWindows) {
   args.push_back("-v");
   const ToolRun r = run(args);
   ASSERT_EQ(r.exitCode, 0) << r.err;
-  EXPECT_NE(r.out.find("frame 6 (6/6)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("frame 6 (6/6, "), std::string::npos) << r.out;
   for (int f = 1; f <= 6; ++f) {
     char name[64];
     std::snprintf(name, sizeof name, "resolved.%04d.exr", f);

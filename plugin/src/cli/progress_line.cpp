@@ -39,12 +39,18 @@ ProgressLine::ProgressLine(std::ostream& out, bool terminal)
 ProgressLine::~ProgressLine() { finish(); }
 
 std::string ProgressLine::textNow(int done, int total) const {
+  std::string text = elapsedText(done, total);
+  const std::size_t frames = text.find(" frames");  // "6/24 frames, ..." -> "6/24, ..."
+  return frames == std::string::npos ? text : text.erase(frames, 7);
+}
+
+std::string ProgressLine::elapsedText(int done, int total) const {
   const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start_;
   return progressText(done, total, elapsed.count());
 }
 
 void ProgressLine::frameDone(int frame, int done, int total) {
-  const std::string text = textNow(done, total);
+  const std::string text = elapsedText(done, total);
   if (terminal_) {
     out_ << "\rtaatool: " << text << "\x1b[K" << std::flush;
     lineOpen_ = true;
