@@ -12,6 +12,7 @@
 
 #include "cli/input_report.h"
 #include "cli/option_effects.h"
+#include "cli/view_selection.h"
 #include "color/ocio_bracket.h"
 #include "io/nearest_files.h"
 #include "io/renderer_presets.h"
@@ -117,6 +118,7 @@ CommandLine parseCommandLine(const std::vector<std::string>& args) {
          preset = v;
        }},
       {"--layer", [&](const std::string& v) { layer = v; }},
+      {"--view", [&](const std::string& v) { cl.viewText = v; }},
       {"--motion-y",
        [&](const std::string& v) {
          const bool up = choice("--motion-y", v, {"up", "down"}) == "up";
@@ -359,6 +361,7 @@ void resolveFrameList(CommandLine& cl) {
   if (cl.job.resolve.mode == ResolveMode::Window && io::hasFramePlaceholder(pattern)) {
     cl.job.availableFrames = availableInputFrames(cl.job.layout);
   }
+  selectViews(cl);
 }
 
 // `words` wrapped to lines of at most `width` columns, each after `indent` spaces.
@@ -448,6 +451,10 @@ AOVs and channels:
                            field; README "Renderer presets" says what is verified.
                            Example: --preset cycles --layer RL
   --layer NAME             render layer name for --preset cycles (default ViewLayer)
+  --view NAME|all          a multi-view (stereo) EXR's views to resolve (default all): each
+                           as if alone, written back as one multi-view file; the channels of
+                           view V are the layout's with V before their last component
+                           (ViewLayer.Combined.left.R), or the part whose view is V
 
 Conventions (internal: motion in pixels, y down, pointing to the previous frame; depth planar):
   --motion-units pixels|ndc|uv  units of the motion AOV: pixels; ndc ([-1, 1] across the display

@@ -17,6 +17,7 @@ struct CommandLine {
   bool listOptions = false;
   Verbosity verbosity = Verbosity::Normal;
   std::string framesText;  // --frames as given; empty = every frame found on disk
+  std::string viewText;    // --view as given; empty = all (a multi-view file's every view)
   bool skipMissing = false;  // --skip-missing: resolve around frames missing from the sequence
   bool strict = false;       // --strict: what would change the result silently is an error
   std::vector<int> missingFrames;  // gaps in the frames found on disk (resolveFrameList)
@@ -34,6 +35,7 @@ bool isSwitchOption(const std::string& option);
 // missing between the first and last found are an error naming the first missing file, unless
 // --skip-missing is given (they are kept in missingFrames for the report). With --frames and
 // --skip-missing, frames asked for whose colour file is missing are skipped the same way.
+// Then the views of a multi-view file (cli/view_selection.h, --view).
 void resolveFrameList(CommandLine& commandLine);
 
 std::string helpText();

@@ -120,6 +120,12 @@ OIIO::ImageSpec makeOutputSpec(const ImageView& rgba, const OIIO::ImageSpec& tem
     }
   }
   spec.attribute("compression", compressionAttribute(options.compression));
+  if (!options.views.empty()) {
+    std::vector<const char*> views;
+    for (const std::string& view : options.views) views.push_back(view.c_str());
+    spec.attribute("multiView", OIIO::TypeDesc(OIIO::TypeDesc::STRING, int(views.size())),
+                   views.data());
+  }
   return spec;
 }
 

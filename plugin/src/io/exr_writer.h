@@ -27,6 +27,8 @@ struct WriteOptions {
   // for files about 2.5% larger; "zip:4" (1 to 9) picks a level.
   std::string compression = "zip";
   std::vector<std::string> rgbaNames;  // the 4 color channels' names; empty: R, G, B, A
+  // A multi-view file's views (its `multiView` attribute, the default view first); empty: none.
+  std::vector<std::string> views;
 };
 
 // Channels written after R, G, B, A (diagnostics, pass-through): one name per image channel.

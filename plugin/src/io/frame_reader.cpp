@@ -429,6 +429,7 @@ FrameData readFrame(const AovLayout& layout, int frame, const CameraInputs& came
   requiredColor.channels.resize(3);
   const int colorPart = findPart(colorFile, requiredColor, "color", frame);
   data.colorSpec = colorFile.parts[std::size_t(colorPart)];
+  data.colorPart = colorPart;
   const int colorChannels =
       addColorRead(reads, colorFile, colorPart, layout.color, frame, data.color);
   data.window = rasterWindow(data.colorSpec);

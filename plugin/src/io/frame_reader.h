@@ -40,8 +40,12 @@ struct FrameData {
   bool jitterTakenOutOfProjection = false;
   RasterWindow window;            // the data window's place in the display window
   OIIO::ImageSpec colorSpec;      // the color part's header: windows and metadata for output
+  int colorPart = 0;              // which part of the colour file that is
   std::string colorPath;
   ExtraChannels passthrough;      // the layout's pass-through channels, types kept
+  // A multi-view job's other views of this frame (the job reads them: resolve/sequence_job),
+  // each read with its view's layout; this one is the first view.
+  std::vector<FrameData> otherViews;
 };
 
 // The largest data window side readFrame accepts: GPUs' texture limit (16384 on llvmpipe and

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <map>
+#include <memory>
 #include <optional>
 #include <set>
 
@@ -158,9 +159,12 @@ std::vector<InputFile> frameInputFiles(const io::AovLayout& layout, int frame) {
   return files;
 }
 
-std::vector<std::string> outputChannelNames(const SequenceJob& job) {
+namespace {
+
+// The output's colour names for one layout (a view's, or the job's).
+std::vector<std::string> outputChannelNamesOf(const SequenceJob& job, const io::AovLayout& layout) {
   if (!job.outputChannels.empty()) return job.outputChannels;
-  std::vector<std::string> names = job.layout.color.channels;
+  std::vector<std::string> names = layout.color.channels;
   if (names.size() == 3) {
     // "ViewLayer.Combined.R" -> "ViewLayer.Combined.A"; "R" -> "A".
     const std::string& red = names[0];
@@ -168,6 +172,12 @@ std::vector<std::string> outputChannelNames(const SequenceJob& job) {
     names.push_back(dot == std::string::npos ? "A" : red.substr(0, dot + 1) + "A");
   }
   return names;
+}
+
+}  // namespace
+
+std::vector<std::string> outputChannelNames(const SequenceJob& job) {
+  return outputChannelNamesOf(job, job.views.empty() ? job.layout : job.views.front().layout);
 }
 
 std::vector<int> availableInputFrames(const io::AovLayout& layout) {
@@ -263,6 +273,10 @@ struct JobRun {
   io::WriteOptions write;
   std::string options;
   color::OutputColorspace colorspace;  // the output's, said in its header
+  // What the job reads: each view's layout (a multi-view job), or the job's own; and each
+  // view's output colour names (the first view's are write.rgbaNames).
+  std::vector<const io::AovLayout*> layouts;
+  std::vector<std::vector<std::string>> viewNames;
 
   JobRun(const SequenceJob& j, const JobCallbacks& c)
       : job(j), callbacks(c), colorspace(color::outputColorspace(j.resolve.color)) {
@@ -271,13 +285,42 @@ struct JobRun {
     const bool jitterGiven = job.jitterSource != JobJitterSource::Auto;
     cameras = {job.ndc, sidecar ? &*sidecar : nullptr, !(sidecar && jitterGiven)};
     write = job.write;
-    write.rgbaNames = outputChannelNames(job);
+    for (const JobView& view : job.views) {
+      layouts.push_back(&view.layout);
+      write.views.push_back(view.name);
+    }
+    if (layouts.empty()) layouts.push_back(&job.layout);
+    for (const io::AovLayout* layout : layouts) {
+      viewNames.push_back(outputChannelNamesOf(job, *layout));
+    }
+    write.rgbaNames = viewNames.front();
     options = outputOptionsAttribute(job);
   }
 
-  // Reads a frame; a projection that carries the frame's jitter gets it taken out.
+  // View `v` of a frame read by read().
+  static const io::FrameData& view(const io::FrameData& data, std::size_t v) {
+    return v == 0 ? data : data.otherViews[v - 1];
+  }
+  // The type view `v` is resolved into and written as (its colour names pick it).
+  SampleType outputTypeOf(const io::FrameData& data, std::size_t v) const {
+    io::WriteOptions viewWrite = write;
+    viewWrite.rgbaNames = viewNames[v];
+    return io::outputSampleType(viewWrite, view(data, v).colorSpec);
+  }
+
+  // Reads a frame, every view of it; a projection that carries the frame's jitter gets it
+  // taken out.
   io::FrameData read(int frame) const {
-    io::FrameData data = io::readFrame(job.layout, frame, cameras);
+    io::FrameData data = readView(*layouts[0], frame);
+    for (std::size_t v = 1; v < layouts.size(); ++v) {
+      data.otherViews.push_back(readView(*layouts[v], frame));
+    }
+    if (layouts.size() > 1) requireCamerasOfTheirOwn(data);
+    return data;
+  }
+
+  io::FrameData readView(const io::AovLayout& layout, int frame) const {
+    io::FrameData data = io::readFrame(layout, frame, cameras);
     if (data.camera) {
       const glm::vec2 jitter = jitterOf(job, data, sidecar ? &*sidecar : nullptr);
       if (auto corrected = withoutJitterInProjection(*data.camera, jitter, data.window, data.ndc)) {
@@ -288,8 +331,32 @@ struct JobRun {
     return data;
   }
 
-  ResolveInput inputOf(const io::FrameData& data) const {
-    tellCameraSource(data);
+  // Each eye has a camera of its own: one camera the views share (a sidecar entry, the header
+  // of the one part they live in) fits one of them at most, silently. Resolving one view at a
+  // time, each with its own camera, is the way.
+  void requireCamerasOfTheirOwn(const io::FrameData& data) const {
+    for (std::size_t v = 0; v < layouts.size(); ++v) {
+      const io::FrameData& d = view(data, v);
+      if (!d.camera) continue;
+      bool shared = d.cameraOrigin == io::CameraOrigin::Sidecar;
+      for (std::size_t w = 0; w < layouts.size(); ++w) {
+        const io::FrameData& other = view(data, w);
+        shared = shared || (w != v && other.colorPath == d.colorPath &&
+                            other.colorPart == d.colorPart);
+      }
+      if (!shared) continue;
+      std::string views;
+      for (const std::string& name : write.views) views += (views.empty() ? "" : ", ") + name;
+      throw Error("the views " + views + " would share one camera (" +
+                      cameraSourceText(job, d, sidecar ? &*sidecar : nullptr) +
+                      "), and each eye has its own: resolve one view at a time (--view NAME), "
+                      "each with its own camera",
+                  {d.colorPath, d.frame, ""});
+    }
+  }
+
+  ResolveInput inputOf(const io::FrameData& data, bool tell = true) const {
+    if (tell) tellCameraSource(data);
     ResolveInput input;
     input.color = &data.color;
     input.depth = data.depth.empty() ? nullptr : &data.depth;
@@ -326,13 +393,28 @@ struct JobRun {
   // The output file of a frame: the input's header plus taa's attributes, pass-through
   // channels, then the diagnostics.
   std::function<void()> writeOf(const io::FrameData& data, TypedImage output,
-                                io::ExtraChannels debug) const {
+                                io::ExtraChannels debug,
+                                const std::vector<TypedImage>& otherViews = {}) const {
     OIIO::ImageSpec spec = data.colorSpec;
     spec.attribute("taa:version", TAA_VERSION_STRING);
     spec.attribute("taa:options", options);
     spec.attribute("taa:colorspace", colorspace.colorspace);
     spec.attribute("taa:ocioConfig", colorspace.config);
-    io::ExtraChannels extra = passthroughWithout(data.passthrough, write.rgbaNames);
+    // The other views' colour after the first's, each in its own type; the resolve's names win
+    // over pass-through channels of the same name.
+    io::ExtraChannels extra;
+    std::vector<std::string> colorNames = write.rgbaNames;
+    for (std::size_t v = 1; v < viewNames.size(); ++v) {
+      const TypedImage& image = otherViews.at(v - 1);
+      io::ExtraChannels viewChannels;
+      viewChannels.names = viewNames[v];
+      viewChannels.image = image.toFloat();  // half widens exactly and is written as half
+      viewChannels.formats.assign(4, image.type() == SampleType::Half ? OIIO::TypeHalf
+                                                                      : OIIO::TypeFloat);
+      io::appendExtraChannels(extra, viewChannels);
+      colorNames.insert(colorNames.end(), viewNames[v].begin(), viewNames[v].end());
+    }
+    io::appendExtraChannels(extra, passthroughWithout(data.passthrough, colorNames));
     if (!debug.names.empty()) io::appendExtraChannels(extra, debug);
     return [path = io::expandFramePattern(job.outputPattern, data.frame),
             output = std::move(output), spec = std::move(spec), this, extra = std::move(extra),
@@ -356,8 +438,10 @@ struct JobRun {
     report.motionPath = data.motionPath;
     report.width = data.color.width();
     report.height = data.color.height();
-    report.nonFiniteColorValues = data.nonFiniteColorValues;
-    report.nonFiniteMotionValues = data.nonFiniteMotionValues;
+    for (std::size_t v = 0; v < layouts.size(); ++v) {  // every view's
+      report.nonFiniteColorValues += view(data, v).nonFiniteColorValues;
+      report.nonFiniteMotionValues += view(data, v).nonFiniteMotionValues;
+    }
     report.jitterTakenOutOfProjection = data.jitterTakenOutOfProjection;
     report.noCamera = job.resolve.mode == ResolveMode::Window && !data.camera;
     const SampleType outputType = io::outputSampleType(write, data.colorSpec);
@@ -379,8 +463,13 @@ struct JobRun {
 // The recursive history resolve: frames in order, each blended into the last one's history.
 void runHistory(JobRun& run, gl::Context& context) {
   const SequenceJob& job = run.job;
-  Resolver resolver(context, job.resolve);
-  resolver.setDebugOutput(job.debugLayers);
+  // One history per view: each view is resolved as if alone.
+  std::vector<std::unique_ptr<Resolver>> resolvers;
+  for (std::size_t v = 0; v < run.layouts.size(); ++v) {
+    resolvers.push_back(std::make_unique<Resolver>(context, job.resolve));
+    resolvers.back()->setDebugOutput(job.debugLayers);
+  }
+  Resolver& resolver = *resolvers.front();
   std::vector<FrameReport> reports(job.frames.size());
   ReadAhead reads(job.frames, job.ioThreads, [&run](int frame) { return run.read(frame); });
   WriteBehind writes(job.ioThreads, [&](int index) {
@@ -399,13 +488,21 @@ void runHistory(JobRun& run, gl::Context& context) {
                           job.resetFrames.count(frame) > 0 || report.sizeChanged;
     lastWidth = report.width;
     lastHeight = report.height;
-    if (report.historyReset) resolver.resetHistory();
+    if (report.historyReset) {
+      for (auto& r : resolvers) r->resetHistory();
+    }
     if (run.callbacks.frameRead) run.callbacks.frameRead(report);
-    const ResolveInput input = run.inputOf(data);
     // Read back in the type the file gets: a half output goes from GL to the encoder as is.
-    TypedImage output = run.resolveNaming(data, [&] {
-      return resolver.resolve(input, io::outputSampleType(run.write, data.colorSpec));
-    });
+    std::vector<TypedImage> outputs;
+    for (std::size_t v = 0; v < resolvers.size(); ++v) {
+      const io::FrameData& viewData = JobRun::view(data, v);
+      const ResolveInput input = run.inputOf(viewData, v == 0);
+      outputs.push_back(run.resolveNaming(viewData, [&] {
+        return resolvers[v]->resolve(input, run.outputTypeOf(data, v));
+      }));
+    }
+    TypedImage output = std::move(outputs.front());
+    outputs.erase(outputs.begin());
     report.cutDetected = resolver.lastFrameWasCut();
     if (report.preroll) {  // history only; a no-op in the queue keeps frameDone in order
       writes.push([] {}, index);
@@ -413,7 +510,7 @@ void runHistory(JobRun& run, gl::Context& context) {
     }
     io::ExtraChannels debug;
     if (job.debugLayers) debug = debugChannels(resolver.lastDebug(), data.nonFiniteMask);
-    writes.push(run.writeOf(data, std::move(output), std::move(debug)), index);
+    writes.push(run.writeOf(data, std::move(output), std::move(debug), outputs), index);
   }
   writes.finish();
 }
@@ -440,8 +537,13 @@ void runWindow(JobRun& run, gl::Context& context) {
   std::sort(outputs.begin(), outputs.end());
   const WindowPlan plan = planWindows(outputs, job.availableFrames, job.resetFrames,
                                       job.resolve.window.radius);
-  WindowResolver resolver(context, job.resolve);
-  resolver.setDebugOutput(job.debugLayers);
+  // One ring per view: each view is resolved as if alone.
+  std::vector<std::unique_ptr<WindowResolver>> resolvers;
+  for (std::size_t v = 0; v < run.layouts.size(); ++v) {
+    resolvers.push_back(std::make_unique<WindowResolver>(context, job.resolve));
+    resolvers.back()->setDebugOutput(job.debugLayers);
+  }
+  WindowResolver& resolver = *resolvers.front();
   std::vector<FrameReport> reports(outputs.size());
   ReadAhead reads(plan.reads, job.ioThreads, [&run](int frame) { return run.read(frame); });
   WriteBehind writes(job.ioThreads, [&](int index) {
@@ -457,7 +559,7 @@ void runWindow(JobRun& run, gl::Context& context) {
     const FrameWindow window = plan.windows.at(frame);
     for (auto it = inRing.begin(); it != inRing.end();) {
       if (*it < window.first) {
-        resolver.dropFrame(*it);
+        for (auto& r : resolvers) r->dropFrame(*it);
         it = inRing.erase(it);
       } else {
         ++it;
@@ -472,17 +574,25 @@ void runWindow(JobRun& run, gl::Context& context) {
                           "their motion vectors only");
         toldVectorsOnly = true;
       }
-      const ResolveInput input = run.inputOf(data);
-      try {
-        resolver.addFrame(f, input);
-      } catch (const Error& e) {
-        throw Error(e.description(), {data.colorPath, f, e.context().channel});
+      for (std::size_t v = 0; v < resolvers.size(); ++v) {
+        const ResolveInput input = run.inputOf(JobRun::view(data, v), v == 0);
+        try {
+          resolvers[v]->addFrame(f, input);
+        } catch (const Error& e) {
+          throw Error(e.description(), {data.colorPath, f, e.context().channel});
+        }
       }
       inRing.push_back(f);
       if (plan.windows.count(f)) {
-        data.color = TypedImage();  // uploaded: only the header and pass-through are kept
+        // Uploaded: only the headers and pass-through are kept.
+        data.color = TypedImage();
         data.depth = Image();
         data.motion = Image();
+        for (io::FrameData& other : data.otherViews) {
+          other.color = TypedImage();
+          other.depth = Image();
+          other.motion = Image();
+        }
         waiting.emplace(f, std::move(data));
       }
     }
@@ -491,13 +601,17 @@ void runWindow(JobRun& run, gl::Context& context) {
     FrameReport& report = reports[std::size_t(index)] = run.reportOf(data, index);
     report.historyReset = plan.shotStarts.count(frame) > 0;
     if (run.callbacks.frameRead) run.callbacks.frameRead(report);
-    TypedImage output = run.resolveNaming(data, [&] {
-      return resolver.resolve(frame, window.first, window.last,
-                              io::outputSampleType(run.write, data.colorSpec));
-    });
+    std::vector<TypedImage> views;
+    for (std::size_t v = 0; v < resolvers.size(); ++v) {
+      views.push_back(run.resolveNaming(JobRun::view(data, v), [&] {
+        return resolvers[v]->resolve(frame, window.first, window.last, run.outputTypeOf(data, v));
+      }));
+    }
+    TypedImage output = std::move(views.front());
+    views.erase(views.begin());
     io::ExtraChannels debug;
     if (job.debugLayers) debug = windowDebugChannels(resolver.lastDebug(), data.nonFiniteMask);
-    writes.push(run.writeOf(data, std::move(output), std::move(debug)), index);
+    writes.push(run.writeOf(data, std::move(output), std::move(debug), views), index);
   }
   writes.finish();
 }

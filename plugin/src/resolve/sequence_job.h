@@ -25,8 +25,17 @@ namespace taa {
 // y down); Sidecar: the camera sidecar's "jitter" entry, required for every frame.
 enum class JobJitterSource { Auto, Options, HeaderAttribute, Sidecar };
 
+// One view of a multi-view file and where its AOVs live (io/views.h).
+struct JobView {
+  std::string name;
+  io::AovLayout layout;
+};
+
 struct SequenceJob {
   io::AovLayout layout;        // where color, depth and motion come from
+  // A multi-view file's views to resolve, each as if alone (its own history or ring), written
+  // back together as one multi-view file. Empty: `layout` alone, a file without views.
+  std::vector<JobView> views;
   std::vector<int> frames;     // frames to resolve, in order
   // Frames whose inputs exist (the color pattern's files on disk), for the window resolve:
   // it reads those within K of a resolved frame, in its shot, even outside `frames`. Empty:

@@ -1,0 +1,143 @@
+// A Blender stereo render (issue 24): Cycles writes one multi-view EXR a frame (multiView
+// left, right; ViewLayer.Combined.left.R ...). taatool --preset cycles resolves both views in
+// one run and writes them back as one multi-view file, each view bit for bit what resolving it
+// alone (--view NAME) gives, in both modes.
+#include <gtest/gtest.h>
+
+#include <OpenImageIO/imageio.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "../e2e/taatool_runner.h"
+
+namespace taa {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr int kFrames = 5;
+
+// Renders the stereo scene once per test process, into a folder of its own.
+const fs::path& renderedStereo() {
+  static const fs::path dir = [] {
+    const fs::path out = fs::path(TAA_TEST_TMPDIR) / ("stereo_" + std::to_string(getpid()));
+    fs::remove_all(out);
+    fs::create_directories(out);
+    const std::string command = "blender -b --factory-startup -noaudio -P '" +
+                                std::string(TAA_STEREO_SCENE_SCRIPT) + "' -- '" + out.string() +
+                                "' > '" + (out / "blender.log").string() + "' 2>&1";
+    if (std::system(command.c_str()) != 0) {
+      ADD_FAILURE() << "Blender failed (Debian's blender is installed by "
+                       "scripts/install-deps.sh); see " << (out / "blender.log");
+    }
+    return out;
+  }();
+  return dir;
+}
+
+struct Exr {
+  OIIO::ImageSpec spec;
+  std::vector<float> pixels;
+  std::vector<float> channel(const std::string& name) const {
+    std::vector<float> values;
+    int c = 0;
+    while (c < spec.nchannels && spec.channelnames[std::size_t(c)] != name) ++c;
+    EXPECT_LT(c, spec.nchannels) << name;
+    if (c == spec.nchannels) return values;
+    for (std::size_t p = 0; p < spec.image_pixels(); ++p) {
+      values.push_back(pixels[p * std::size_t(spec.nchannels) + std::size_t(c)]);
+    }
+    return values;
+  }
+};
+
+Exr readExr(const fs::path& path) {
+  Exr exr;
+  auto in = OIIO::ImageInput::open(path.string());
+  EXPECT_TRUE(in) << path;
+  if (!in) return exr;
+  exr.spec = in->spec();
+  exr.pixels.resize(exr.spec.image_pixels() * std::size_t(exr.spec.nchannels));
+  EXPECT_TRUE(in->read_image(0, 0, 0, exr.spec.nchannels, OIIO::TypeFloat, exr.pixels.data()));
+  return exr;
+}
+
+std::vector<std::string> multiView(const OIIO::ImageSpec& spec) {
+  std::vector<std::string> views;
+  if (const OIIO::ParamValue* value = spec.find_attribute("multiView")) {
+    for (std::size_t i = 0; i < value->type().numelements(); ++i) {
+      views.emplace_back(static_cast<const char* const*>(value->data())[i]);
+    }
+  }
+  return views;
+}
+
+std::string frameName(int frame) {
+  char name[32];
+  std::snprintf(name, sizeof name, "r_%04d.exr", frame);
+  return name;
+}
+
+class StereoTest : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(StereoTest, BothViewsInOneRunEachAsIfAlone) {
+  const fs::path& render = renderedStereo();
+  const Exr input = readExr(render / "render_0001.exr");
+  ASSERT_EQ(multiView(input.spec), (std::vector<std::string>{"left", "right"}));
+  const std::string mode = GetParam();
+  const fs::path dir = test::freshTestFolder();
+  auto run = [&](const std::string& out, std::vector<std::string> extra) {
+    std::vector<std::string> args = {"--preset", "cycles", (render / "render_####.exr").string(),
+                                     "--mode", mode, "-q", "-o",
+                                     (dir / out / "r_####.exr").string()};
+    args.insert(args.end(), extra.begin(), extra.end());
+    const test::ToolRun r = test::runTaatool(args, dir);
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+  };
+  run("both", {});
+  run("left", {"--view", "left"});
+  run("right", {"--view", "right"});
+  for (int frame = 1; frame <= kFrames; ++frame) {
+    const Exr both = readExr(dir / "both" / frameName(frame));
+    EXPECT_EQ(multiView(both.spec), (std::vector<std::string>{"left", "right"}));
+    for (const std::string view : {"left", "right"}) {
+      const Exr alone = readExr(dir / view / frameName(frame));
+      EXPECT_EQ(multiView(alone.spec), std::vector<std::string>{view});
+      for (const char* c : {"R", "G", "B", "A"}) {
+        const std::string name = "ViewLayer.Combined." + view + "." + c;
+        EXPECT_EQ(both.channel(name), alone.channel(name)) << name << " frame " << frame;
+      }
+      EXPECT_EQ(both.spec.channelformat(0), OIIO::TypeHalf);  // the render's half colour
+    }
+    // The views differ (the eyes see the cube from two places): the comparison can fail.
+    EXPECT_NE(both.channel("ViewLayer.Combined.left.R"),
+              both.channel("ViewLayer.Combined.right.R"));
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Modes, StereoTest, ::testing::Values("window", "history"));
+
+TEST(StereoViews, ViewChoicesAreChecked) {
+  const fs::path& render = renderedStereo();
+  const fs::path dir = test::freshTestFolder();
+  const std::vector<std::string> base = {"--preset", "cycles",
+                                         (render / "render_####.exr").string(), "-o",
+                                         (dir / "r_####.exr").string()};
+  auto with = [&](std::vector<std::string> extra) {
+    std::vector<std::string> args = base;
+    args.insert(args.end(), extra.begin(), extra.end());
+    return test::runTaatool(args, dir);
+  };
+  test::expectToolError(with({"--view", "centre"}),
+                        {"the color file has no view centre (its views: left, right)",
+                         "render_0001.exr"});
+  test::expectToolError(with({"--debug-layers"}),
+                        {"--debug-layers shows one view", "pick one with --view"});
+}
+
+}  // namespace
+}  // namespace taa
