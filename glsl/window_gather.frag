@@ -29,6 +29,9 @@
 #include "window_weights.glsl"
 
 #define MAX_SOURCES 32
+#ifndef LINEAR_SUM
+#define LINEAR_SUM 0  // 1: the ring holds input values, summed as they are (linear light);
+#endif                // decisions on a compressed luma (decisionLuma)
 #ifndef CHAINS
 #define CHAINS 1  // 0: no frame of the window has moving samples; the chains' code is left out
 #endif            // (llvmpipe would run it, masked, for every pixel)
@@ -63,6 +66,14 @@ uniform float uSigma;
 uniform float uColourTolerance;
 uniform float uDepthTolerance;
 uniform float uReconstructionWeight;
+// A static sample never lands inside a moving object at t unless it is in front of it: where
+// the pixel's nearest surface moves, samples of the static surface behind it (a floor the
+// object stands on, at nearly the object's own depth where they touch) are rejected.
+uniform bool uOpaqueMoving;
+// Each side of the window ends, per pixel, at the first source whose samples disagree with
+// what the pixel gathered from the nearer frames: shading that changed there has changed for
+// good, farther frames would only be rejected one by one or let through by chance.
+uniform bool uAdaptive;
 
 layout(location = 0) out vec4 outColor;  // output colour space
 layout(location = 1) out vec4 outDebug;  // weight gathered, rejected fraction, candidates, 0
@@ -77,7 +88,9 @@ float gWeight;
 // samples' weight, weighted colour and weighted luma squared; and the counts for diagnostics.
 float gSourceWeight;
 vec4 gSourceSum;
-float gSourceLumaSquares;
+float gSourceLumaSum, gSourceLumaSquares;
+float gOwnDepth[9];  // t's 3x3 signed depths (+ static, - moving), row by row
+ivec2 gPixel;
 float gCandidates, gHidden, gDisagreeing;
 // The current source's uniforms, read once: indexing uniform arrays by a loop variable costs a
 // load per lane on llvmpipe each time.
@@ -104,10 +117,22 @@ void addSample(vec4 colour, float weight) {
   gWeight += weight;
 }
 
-void addSourceSample(vec4 colour, float weight) {
+// The luma the colour tests see. Summed in linear light, the values are compressed first as
+// taa's default bracket compresses them (x / (x + 4), linear x / 4 below 0): a highlight must
+// not swamp a mean or a variance. In the working space they are compressed already.
+float decisionLuma(vec4 colour) {
   float y = luma(colour.rgb);
+#if LINEAR_SUM
+  y = y >= 0.0 ? y / (y + 4.0) : 0.25 * y;
+#endif
+  return y;
+}
+
+void addSourceSample(vec4 colour, float weight) {
+  float y = decisionLuma(colour);
   gSourceWeight += weight;
   gSourceSum += weight * colour;
+  gSourceLumaSum += weight * y;
   gSourceLumaSquares += weight * y * y;
 }
 
@@ -136,7 +161,14 @@ void addStaticSample(ivec2 corner, ivec2 step, bool skip, ivec2 taken, float fra
   float carriedDepth = far ? depth
                            : depth * (depthAlong + dot(s, gToTargetDepthAlong.xy)) +
                                  depthOffset + dot(s, gToTargetDepthOffset.xy);
-  bool hidden = hiddenBehind(carriedDepth, gFarthest, uDepthTolerance);
+  // t's own sample nearest where this one lands: a moving one there (and not behind it)
+  // means the static sample is inside the moving object's footprint at t.
+  ivec2 q = clamp(ivec2(floor(h.xy * (1.0 / h.z) - uTargetJitter)) - gPixel + 1, ivec2(0),
+                  ivec2(2));
+  float there = gOwnDepth[3 * q.y + q.x];
+  bool insideMoving =
+      uOpaqueMoving && there < 0.0 && !(carriedDepth < -there * (1.0 - uDepthTolerance));
+  bool hidden = hiddenBehind(carriedDepth, gFarthest, uDepthTolerance) || insideMoving;
   // A thin feature t's own samples missed (nearer than all of them) cannot agree with them:
   // it is kept as it is, and farther sources look for theirs at its depth.
   bool thin = nearerThanAll(carriedDepth, gNearest, uDepthTolerance);
@@ -195,6 +227,7 @@ void addMovingBlock(vec2 chained, bool alive) {
 
 void main() {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
+  gPixel = pixel;
   gPosition = gl_FragCoord.xy;
   gSize = textureSize(uRing, 0).xy;
   gSum = vec4(0.0);
@@ -205,7 +238,7 @@ void main() {
 
   // Frame t: its own samples, its filtered reconstruction, its depths.
   vec4 filtered = vec4(0.0);
-  float ownWeight = 0.0, ownLumaSquares = 0.0;
+  float ownWeight = 0.0, ownLumaSum = 0.0, ownLumaSquares = 0.0;
   vec4 ownSum = vec4(0.0);
   gNearest = 1.0 / 0.0;
   gFarthest = 0.0;
@@ -227,6 +260,7 @@ void main() {
       float signedDepth = entry.depth;
       float depth = abs(signedDepth);
       depths[3 * (dy + 1) + dx + 1] = depth;
+      gOwnDepth[3 * (dy + 1) + dx + 1] = signedDepth;
       gNearest = min(gNearest, depth);
       gFarthest = max(gFarthest, depth);
       // Selects, not ifs: llvmpipe runs an if's body for every pixel anyway, masked.
@@ -237,9 +271,10 @@ void main() {
       // Border texels repeat: count each sample once.
       float w = wanted == n ? spatialWeight(vec2(n) + 0.5 + uTargetJitter - gPosition, uSigma)
                             : 0.0;
-      float y = luma(colour.rgb);
+      float y = decisionLuma(colour);
       ownWeight += w;
       ownSum += w * colour;
+      ownLumaSum += w * y;
       ownLumaSquares += w * y * y;
     }
   }
@@ -292,11 +327,13 @@ void main() {
   // The luma variance within frames (texture and aliasing inside the footprint, not change
   // between frames), pooled over t's own samples and each source weighed so far: the noise a
   // source's mean is tested against.
-  float ownLuma = luma(ownSum.rgb) / ownWeight;
+  float ownLuma = ownLumaSum / ownWeight;
   float within = ownLumaSquares - ownWeight * ownLuma * ownLuma;
   float withinWeight = ownWeight;
 
+  bool behindOpen = true, aheadOpen = true;  // uAdaptive: each side until a source disagrees
   for (int k = 0; k < uSourceCount; ++k) {
+    if (!(behindOpen || aheadOpen)) break;
     gSourceLayer = uSourceLayer[k];
     gSourceJitter = uSourceJitter[k];
     gToTargetAlong = uToTargetAlong[k];
@@ -308,9 +345,11 @@ void main() {
     int offsetFrames = uSourceOffset[k];
     int layer = gSourceLayer;
     vec2 jitter = gSourceJitter;
-    float frameWeight = uSourceWeight[k];
+    bool open = offsetFrames < 0 ? behindOpen : aheadOpen;
+    float frameWeight = open ? uSourceWeight[k] : 0.0;
     gSourceWeight = 0.0;
     gSourceSum = vec4(0.0);
+    gSourceLumaSum = 0.0;
     gSourceLumaSquares = 0.0;
     if (uSourceHasCamera[k] != 0 && uTargetHasCamera) {
       // The near surface's block, then, where the pixel needs it, a second surface's: the
@@ -364,10 +403,14 @@ void main() {
 #endif
 
     // The source weighed whole: how well its samples' mean agrees with t's own.
-    if (gSourceWeight > 0.0) {
-      float mean = luma(gSourceSum.rgb) / gSourceWeight;
+    if (open && gSourceWeight > 0.0) {
+      float mean = gSourceLumaSum / gSourceWeight;
       float agreement = agreementWeight(mean - ownLuma, max(within / withinWeight, 0.0),
                                         gSourceWeight, ownWeight, ownLuma, uColourTolerance);
+      // Adaptive: a side whose source disagrees is closed for the farther frames.
+      bool closes = uAdaptive && agreement < 0.5;
+      behindOpen = behindOpen && !(closes && offsetFrames < 0);
+      aheadOpen = aheadOpen && !(closes && offsetFrames > 0);
       gSum += agreement * frameWeight * gSourceSum;
       gWeight += agreement * frameWeight * gSourceWeight;
       gDisagreeing += (1.0 - agreement) * gSourceWeight;
@@ -377,7 +420,13 @@ void main() {
   }
 
   vec4 working = withinWorkingRange(gSum / gWeight, rgbMin, rgbMax);
+#if LINEAR_SUM
+  // Input values summed: into the output colorspace through the bracket and back (the
+  // identity when input and output share a colorspace).
+  outColor = finiteOutput(taaFromWorking(taaToWorking(working)));
+#else
   outColor = finiteOutput(taaFromWorking(working));
+#endif
   // Rejected: hidden candidates, and the weight of sources left out for their colour.
   float rejected = gHidden + gDisagreeing;
   outDebug = vec4(gWeight, gCandidates > 0.0 ? min(rejected / gCandidates, 1.0) : 0.0,

@@ -17,7 +17,12 @@ layout(location = 1) out uint outMotion;
 
 void main() {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
+#if LINEAR_SUM
+  // The gather sums input values in linear light (window_gather.frag): kept as they are.
+  vec4 working = finiteWorking(texelFetch(uColour, pixel, 0));
+#else
   vec4 working = finiteWorking(taaToWorking(texelFetch(uColour, pixel, 0)));
+#endif
   working.a = clamp(working.a, -65504.0, 65504.0);  // alpha is kept as a half
   outSample = packRingSample(working, texelFetch(uDepth, pixel, 0).r);
   outMotion = packRingMotion(texelFetch(uMotion, pixel, 0).xy);

@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 namespace taa {
 namespace {
 
@@ -11,12 +13,12 @@ TEST(WindowFrameWeight, EveryFrameAlikeByDefault) {
   for (int frames : {-4, -1, 1, 3, 4}) EXPECT_EQ(windowFrameWeight(frames, options), 1.0f);
 }
 
-TEST(WindowFrameWeight, FalloffHalvesTheWeightAtItsDistance) {
+TEST(WindowFrameWeight, FalloffIsAGaussianInFrames) {
   WindowOptions options;
   options.falloff = 2.0f;
-  EXPECT_FLOAT_EQ(windowFrameWeight(2, options), 0.5f);
-  EXPECT_FLOAT_EQ(windowFrameWeight(-2, options), 0.5f);
-  EXPECT_FLOAT_EQ(windowFrameWeight(4, options), 0.2f);
+  EXPECT_FLOAT_EQ(windowFrameWeight(2, options), std::exp(-1.0f));
+  EXPECT_FLOAT_EQ(windowFrameWeight(-2, options), std::exp(-1.0f));
+  EXPECT_FLOAT_EQ(windowFrameWeight(4, options), std::exp(-4.0f));
 }
 
 TEST(WindowFrameWeight, TaperIsAHannWindowOverKPlusOneFrames) {
@@ -27,7 +29,7 @@ TEST(WindowFrameWeight, TaperIsAHannWindowOverKPlusOneFrames) {
   EXPECT_FLOAT_EQ(windowFrameWeight(2, options), 0.5f);  // cos^2(pi/4)
   EXPECT_NEAR(windowFrameWeight(-4, options), 0.0f, 1e-7f);
   options.falloff = 2.0f;  // the two multiply
-  EXPECT_FLOAT_EQ(windowFrameWeight(2, options), 0.25f);
+  EXPECT_FLOAT_EQ(windowFrameWeight(2, options), 0.5f * std::exp(-1.0f));
 }
 
 }  // namespace

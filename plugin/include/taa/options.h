@@ -66,7 +66,8 @@ struct WindowOptions {
   // Pixels: standard deviation of the Gaussian weighting a carried sample by its distance to
   // the output pixel's centre. Smaller is sharper and noisier. Typical 0.3 .. 0.6.
   float sigma = 0.35f;
-  // Frames: temporal weight 1 / (1 + (distance / falloff)^2); 0 weighs every frame alike.
+  // Frames: temporal weight exp(-(distance / falloff)^2), a Gaussian falloff over the window;
+  // 0 weighs every frame alike.
   float falloff = 0.0f;
   // Also weigh frames by a Hann taper over the window, cos^2(pi/2 distance / (K + 1)): frames
   // enter and leave the moving window gently, so the output does not step when they do.
@@ -83,6 +84,17 @@ struct WindowOptions {
   // Weight of the resolved frame's own filtered reconstruction (the history mode's unjitter),
   // added as one more sample: it is what a pixel that gathers little falls back to.
   float reconstructionWeight = 0.1f;
+  // Sum the samples' values in linear light (the input's values) instead of the bracket's
+  // working space, whose average biases every edge between bright and dark; the colour tests
+  // still decide on a compressed luma. Forces a shader rebuild.
+  bool linear = false;
+  // A static sample landing where t's own nearest sample is a moving object (and not in front
+  // of it) is hidden: a moving object stays opaque where it touches the floor it slides on.
+  bool opaqueMoving = false;
+  // Each side of a pixel's window ends at the first source frame whose samples disagree with
+  // what the nearer frames gave (the colour test): a long window where the shot holds still,
+  // a short one where shading changes.
+  bool adaptive = false;
 };
 
 enum class Reconstruction { Centre, BlackmanHarris, Lanczos2 };

@@ -94,6 +94,23 @@ Entry windowNumberOption(OptionInfo info, float lo, float hi, float WindowOption
   return e;
 }
 
+// An on|off setting of the window resolve (ResolveOptions::window).
+Entry windowSwitchOption(OptionInfo info, bool WindowOptions::*field) {
+  info.values = "on|off";
+  Entry e{info, {}, {}};
+  e.set = [field, name = info.name](ResolveOptions& o, const std::string& v) {
+    if (v == "on" || v == "1") {
+      o.window.*field = true;
+    } else if (v == "off" || v == "0") {
+      o.window.*field = false;
+    } else {
+      reject(name, v, "on or off");
+    }
+  };
+  e.get = [field](const ResolveOptions& o) { return std::string(o.window.*field ? "on" : "off"); };
+  return e;
+}
+
 Entry switchOption(OptionInfo info, bool ResolveOptions::*field) {
   info.values = "on|off";
   Entry e{info, {}, {}};
@@ -145,7 +162,7 @@ std::vector<Entry> makeEntries() {
        "sample by its distance to the pixel centre; smaller is sharper and noisier"},
       0.05f, 4.0f, &WindowOptions::sigma));
   entries.push_back(windowNumberOption(
-      {"window-falloff", "Mode", "", "", "window mode: frames, weight 1/(1+(distance/falloff)^2) "
+      {"window-falloff", "Mode", "", "", "window mode: frames, weight exp(-(distance/falloff)^2) "
        "by distance in time (0: every frame alike)"},
       0.0f, kNoLimit, &WindowOptions::falloff));
   {
@@ -177,6 +194,18 @@ std::vector<Entry> makeEntries() {
       {"window-reconstruction-weight", "Mode", "", "", "window mode: weight of the frame's own "
        "filtered reconstruction, the fallback of pixels that gather little"},
       0.0f, kNoLimit, &WindowOptions::reconstructionWeight));
+  entries.push_back(windowSwitchOption(
+      {"window-linear", "Mode", "", "", "window mode: sum the samples in linear light (the "
+       "colour tests still decide on a compressed luma) instead of the bracket's working space"},
+      &WindowOptions::linear));
+  entries.push_back(windowSwitchOption(
+      {"window-opaque-moving", "Mode", "", "", "window mode: hide static samples that land "
+       "inside a moving object at the resolved frame (a box on the floor stays opaque)"},
+      &WindowOptions::opaqueMoving));
+  entries.push_back(windowSwitchOption(
+      {"window-adaptive", "Mode", "", "", "window mode: end each side of a pixel's window at "
+       "the first frame whose samples disagree with the nearer frames'"},
+      &WindowOptions::adaptive));
   entries.push_back(enumOption<Reconstruction>(
       {"reconstruction", "Unjitter", "", "", "filter rebuilding each frame at pixel centres: "
        "blackman-harris is soft, lanczos2 sharper with slight ringing, centre takes the pixel's "

@@ -80,6 +80,7 @@ struct WindowResolver::Impl {
   gl::Program gatherPrograms[2];
   gl::AnySamplesQuery movingQuery;
   color::OcioGpuResources toWorkingLuts, fromWorkingLuts;
+  color::OcioGpuResources gatherToWorkingLuts;  // linear sums: after fromWorkingLuts' units
 
   // The ring: one layer per frame, each sample's colour (the bracket's working space, 16 bits
   // of mantissa) and depth (a float, signed by window_classify.frag) packed in one texel
@@ -125,25 +126,38 @@ struct WindowResolver::Impl {
 
   void buildPrograms() {
     const color::OcioBracket bracket(options.color);
+    // Linear sums: the ring keeps input values and the gather takes them through the bracket
+    // and back at the end (into the output colorspace), so it needs both functions.
+    const bool linear = options.window.linear;
+    const std::string linearDefine = "#define LINEAR_SUM " + std::string(linear ? "1" : "0");
     prepareProgram = gl::Program(
         gl, gl::embeddedShaderSource("fullscreen.vert"),
-        gl::embeddedShaderSource("window_prepare.frag", {bracket.toWorking()->getShaderText()}));
+        gl::embeddedShaderSource("window_prepare.frag",
+                                 {linearDefine, bracket.toWorking()->getShaderText()}));
     classifyProgram = gl::Program(gl, "fullscreen.vert", "window_classify.frag");
     countMovingProgram = gl::Program(gl, "fullscreen.vert", "window_count_moving.frag");
     for (int chains = 0; chains < 2; ++chains) {
-      gatherPrograms[chains] = gl::Program(
-          gl, gl::embeddedShaderSource("fullscreen.vert"),
-          gl::embeddedShaderSource("window_gather.frag",
-                                   {"#define CHAINS " + std::to_string(chains),
-                                    bracket.fromWorking()->getShaderText()}));
+      std::vector<std::string> prefix = {"#define CHAINS " + std::to_string(chains), linearDefine,
+                                         bracket.fromWorking()->getShaderText()};
+      if (linear) prefix.push_back(bracket.toWorking()->getShaderText());
+      gatherPrograms[chains] = gl::Program(gl, gl::embeddedShaderSource("fullscreen.vert"),
+                                           gl::embeddedShaderSource("window_gather.frag", prefix));
     }
     toWorkingLuts = color::OcioGpuResources(gl, bracket.toWorking(), kFirstOcioUnit);
     fromWorkingLuts = color::OcioGpuResources(gl, bracket.fromWorking(), kFirstOcioUnit);
+    gatherToWorkingLuts =
+        linear ? color::OcioGpuResources(gl, bracket.toWorking(),
+                                         kFirstOcioUnit + fromWorkingLuts.unitCount())
+               : color::OcioGpuResources();
     toWorkingLuts.setUniforms(prepareProgram);
-    const color::OcioBracket::Range range = bracket.workingRange();
+    // glsl/finite_range.glsl's limits: the bracket's image of half's range, or that range
+    // itself for input values.
+    const color::OcioBracket::Range range =
+        linear ? color::OcioBracket::Range{-65504.0f, 65504.0f} : bracket.workingRange();
     for (const gl::Program& p : gatherPrograms) {
       fromWorkingLuts.setUniforms(p);
-      p.set("uWorkingRange", range.lo, range.hi);  // glsl/finite_range.glsl's limits
+      if (linear) gatherToWorkingLuts.setUniforms(p);
+      p.set("uWorkingRange", range.lo, range.hi);
     }
     movingQuery = gl::AnySamplesQuery(gl);
   }
@@ -439,6 +453,8 @@ struct WindowResolver::Impl {
     p.set("uColourTolerance", options.window.colourTolerance);
     p.set("uDepthTolerance", options.depthTolerance);
     p.set("uReconstructionWeight", options.window.reconstructionWeight);
+    p.set("uOpaqueMoving", options.window.opaqueMoving ? 1 : 0);
+    p.set("uAdaptive", options.window.adaptive ? 1 : 0);
     // The output clamped to what its type holds (glsl/finite_range.glsl).
     p.set("uOutputLimit", outputType == SampleType::Half ? 65504.0f
                                                          : std::numeric_limits<float>::max());
@@ -448,6 +464,7 @@ struct WindowResolver::Impl {
     ring.bind(kRingUnit);
     ringMotion.bind(kRingMotionUnit);
     fromWorkingLuts.bind();
+    gatherToWorkingLuts.bind();
     triangle.draw();
     gl::checkError(gl, "window gather pass");
 
