@@ -114,7 +114,6 @@ int run(std::vector<std::string> args) {
     args.erase(args.begin(), args.begin() + 2);
   }
   cli::CommandLine cl = cli::parseCommandLine(args);
-  cli::useOcioEnvironmentUnlessGiven(cl, args);  // as taatool
   cli::resolveFrameList(cl);
   const SequenceJob& job = cl.job;
   // Cameras as taatool takes them: the sidecar's, else the headers'.
