@@ -77,6 +77,8 @@ const std::map<std::string, SpecValue>& specification() {
       {"kOfxImageEffectActionGetClipPreferences",
        {"OfxImageEffectActionGetClipPreferences", "ofxImageEffect.h"}},
       {"kOfxImageEffectActionRender", {"OfxImageEffectActionRender", "ofxImageEffect.h"}},
+      {"kOfxImageEffectActionEndSequenceRender",
+       {"OfxImageEffectActionEndSequenceRender", "ofxImageEffect.h"}},
       {"kOfxImageEffectContextFilter", {"OfxImageEffectContextFilter", "ofxImageEffect.h"}},
       {"kOfxImageEffectContextGeneral", {"OfxImageEffectContextGeneral", "ofxImageEffect.h"}},
       {"kOfxImageEffectSimpleSourceClipName", {"Source", "ofxImageEffect.h"}},

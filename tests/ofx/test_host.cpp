@@ -3,6 +3,7 @@
 #include <Imath/half.h>
 #include <dlfcn.h>
 
+#include <algorithm>
 #include <cstdarg>
 #include <cstdio>
 #include <cstring>
@@ -21,6 +22,7 @@ struct HostImage {
   std::vector<char> data;
 };
 std::map<PropertySet*, std::unique_ptr<HostImage>> liveImages;  // by their props
+std::size_t peakLiveImages = 0;  // the most held at once since the last reset
 
 int componentCount(const std::string& components) {
   return components == kOfxImageComponentAlpha ? 1
@@ -168,6 +170,7 @@ OfxStatus clipGetImage(OfxImageClipHandle handle, OfxTime time, const OfxRectD*,
   std::lock_guard<std::mutex> lock(stateMutex);
   ++const_cast<HostClip&>(clip).imagesServed;
   liveImages[&image->props].reset(image);
+  peakLiveImages = std::max(peakLiveImages, liveImages.size());
   *imageProps = image->props.handle();
   return kOfxStatOK;
 }
@@ -498,6 +501,13 @@ std::string TestHost::persistentMessage(const HostEffect& effect) const {
   std::lock_guard<std::mutex> lock(stateMutex);
   const auto it = persistentMessages.find(&effect);
   return it == persistentMessages.end() ? "" : it->second;
+}
+
+int TestHost::peakLiveImages(bool reset) const {
+  std::lock_guard<std::mutex> lock(stateMutex);
+  const int peak = int(taa::ofxtest::peakLiveImages);
+  if (reset) taa::ofxtest::peakLiveImages = taa::ofxtest::liveImages.size();
+  return peak;
 }
 
 int TestHost::liveImages() const {

@@ -98,6 +98,8 @@ class TestHost {
   // The persistent message on `effect` ("type: text"), "" when none.
   std::string persistentMessage(const HostEffect& effect) const;
   int liveImages() const;
+  // The most images the plugin held at once (since the last reset), then resets it.
+  int peakLiveImages(bool reset = true) const;
 
   OfxHost* ofxHost() { return &host_; }
 

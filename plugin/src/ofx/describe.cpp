@@ -58,7 +58,8 @@ OfxStatus describe(OfxImageEffectHandle descriptor) {
   s.properties->propSetInt(props, kOfxImageEffectInstancePropSequentialRender, 0,
                            sequentialRender(PluginSettings{}));
   s.properties->propSetInt(props, kOfxImageEffectPluginPropHostFrameThreading, 0, 0);
-  // Each render thread gets its own node and GL context, so concurrent renders are safe.
+  // Each render takes a node (GL context) of its own from the instance's pool, so concurrent
+  // renders are safe; beyond the pool's bound they wait (ofx/node_pool.h).
   s.properties->propSetString(props, kOfxImageEffectPluginRenderThreadSafety, 0,
                               kOfxImageEffectRenderFullySafe);
   return kOfxStatOK;

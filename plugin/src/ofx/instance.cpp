@@ -47,17 +47,8 @@ void requireSamePixelAspect(const ClipImage& aux, const ClipImage& color) {
 
 }  // namespace
 
-Instance::ThreadHistory::~ThreadHistory() { forget(); }
-
-void Instance::ThreadHistory::forget() {
-  if (node) taa_node_destroy(node);
-  node = nullptr;
-  lastFrame.reset();
-  ring.clear();
-  settings.reset();
-}
-
-Instance::Instance(OfxImageEffectHandle effect) : effect_(effect) {
+Instance::Instance(OfxImageEffectHandle effect)
+    : effect_(effect), pool_(renderNodesFromEnvironment()) {
   source_ = clipHandle(effect, kOfxImageEffectSimpleSourceClipName);
   depth_ = clipHandle(effect, kDepthClip);
   motion_ = clipHandle(effect, kMotionClip);
@@ -76,26 +67,11 @@ TemporalPlan Instance::plan(OfxTime time) const {
   return planFrame(frame, readSettings(effect_, time), sourceRange(frame));
 }
 
-std::shared_ptr<Instance::ThreadHistory> Instance::historyOfThisThread() {
-  std::lock_guard<std::mutex> lock(historiesMutex_);
-  auto& slot = histories_[std::this_thread::get_id()];
-  if (!slot) slot = std::make_shared<ThreadHistory>();
-  return slot;
-}
+void Instance::purgeCaches() { pool_.purge(); }
 
-void Instance::purgeCaches() {
-  std::map<std::thread::id, std::shared_ptr<ThreadHistory>> taken;
-  {
-    std::lock_guard<std::mutex> lock(historiesMutex_);
-    taken.swap(histories_);
-  }
-  for (auto& entry : taken) {
-    std::lock_guard<std::mutex> lock(entry.second->mutex);
-    entry.second->forget();
-  }
-}
+void Instance::endSequence() { pool_.trim(1); }
 
-OfxRectI Instance::pushFrame(ThreadHistory& history, int frame, const PluginSettings& settings,
+OfxRectI Instance::pushFrame(NodeSlot& history, int frame, const PluginSettings& settings,
                              RenderScale scale) const {
   const ClipImage color(source_, frame, kOfxImageEffectSimpleSourceClipName);
   std::optional<ClipImage> depth, motion;
@@ -141,9 +117,25 @@ void Instance::render(OfxTime time, const OfxRectI& window, RenderScale scale) {
   const PluginSettings settings = readSettings(effect_, time);
   const FrameRange range = sourceRange(requested);
   const TemporalPlan plan = planFrame(requested, settings, range);
-  const std::shared_ptr<ThreadHistory> slot = historyOfThisThread();
-  ThreadHistory& history = *slot;
-  std::lock_guard<std::mutex> lock(history.mutex);
+  // The idle node that holds most of this render's work: in window mode the most frames of
+  // its window, in history mode the frame before it (or the same one), with these settings.
+  const auto score = [&](const NodeSlot& slot) {
+    if (!slot.node || !slot.settings || *slot.settings != settings || !(slot.scale == scale)) {
+      return 0;
+    }
+    if (settings.mode == kModeWindow) {
+      if (!(slot.range == range)) return 0;
+      int held = 1;
+      for (int f : FrameSpan(plan.frames.first, plan.frames.last)) held += int(slot.ring.count(f));
+      return held;
+    }
+    if (slot.startFrame != plan.frames.first || !slot.lastFrame) return 1;
+    if (*slot.lastFrame == plan.frame) return 4;
+    return isNextFrame(*slot.lastFrame, plan.frame) ? 3 : 1;
+  };
+  const std::shared_ptr<NodeSlot> slot =
+      pool_.acquire(score, [this] { return suites().effects->abort(effect_) != 0; });
+  NodeSlot& history = *slot;
   if (settings.mode == kModeWindow) {
     renderWindow(history, plan, range, settings, scale);
   } else {
@@ -152,7 +144,7 @@ void Instance::render(OfxTime time, const OfxRectI& window, RenderScale scale) {
   writeOutput(history, time, window);
 }
 
-void Instance::renderHistory(ThreadHistory& history, const TemporalPlan& plan,
+void Instance::renderHistory(NodeSlot& history, const TemporalPlan& plan,
                              const PluginSettings& settings, RenderScale scale) const {
   if (!history.node && taa_node_create(nullptr, &history.node) != TAA_OK) {
     throw std::runtime_error(taa_last_error());
@@ -188,7 +180,7 @@ void Instance::renderHistory(ThreadHistory& history, const TemporalPlan& plan,
   }
 }
 
-void Instance::renderWindow(ThreadHistory& history, const TemporalPlan& plan, FrameRange range,
+void Instance::renderWindow(NodeSlot& history, const TemporalPlan& plan, FrameRange range,
                             const PluginSettings& settings, RenderScale scale) const {
   // The node knows every frame it was given (its windows are taatool's on those frames): a new
   // setup or clip range starts from a new node.
@@ -226,7 +218,7 @@ void Instance::renderWindow(ThreadHistory& history, const TemporalPlan& plan, Fr
   history.bounds = history.ring.at(plan.frame);
 }
 
-void Instance::writeOutput(const ThreadHistory& history, OfxTime time,
+void Instance::writeOutput(const NodeSlot& history, OfxTime time,
                            const OfxRectI& window) const {
   // The resolved frame over the source bounds, y-up like the host's images.
   const OfxRectI& src = history.bounds;

@@ -1,21 +1,19 @@
 // One effect instance. The output at frame t is, by definition, what taatool gives for t on the
 // clip's frames (temporal_plan.h decides the frames). History mode: resolving the clip from its
 // first frame (or, with History Frames = N > 0, from frame t - N + 1) up to t. Window mode:
-// resolving t from frames t-K..t+K. Each render thread keeps its own C ABI node (its own GL
-// context). History: the node holds the state after the last frame it rendered; when the host
-// asks for t right after t - 1 on that thread with the same settings, only frame t is pushed,
-// otherwise the node is reset and the plan's frames are pushed again. Window: the node's ring
-// keeps the frames it holds between renders; a render drops those its window does not need and
-// pushes those it lacks, so t right after t - 1 pushes one frame, and any order is exact. The
+// resolving t from frames t-K..t+K. Renders share the instance's C ABI nodes (each with its own
+// GL context), at most TAA_OFX_RENDER_NODES of them (ofx/node_pool.h): a render takes the idle
+// node that holds most of its work. History: the node holds the state after the last frame it
+// rendered; when t follows t - 1 with the same settings, only frame t is pushed, otherwise the
+// node is reset and the plan's frames are pushed again. Window: the node's ring keeps the
+// frames it holds between renders; a render drops those its window does not need and pushes
+// those it lacks, so t right after t - 1 pushes one frame, and any order is exact. The
 // frames-needed action asks the host for the plan's frames.
 #pragma once
 
-#include <map>
-#include <memory>
-#include <mutex>
-#include <optional>
-#include <thread>
+#include <cstddef>
 
+#include "ofx/node_pool.h"
 #include "ofx/ofx_abi.h"
 #include "ofx/plugin_parameters.h"
 #include "ofx/temporal_plan.h"
@@ -36,40 +34,29 @@ class Instance {
   // Renders `window` of the output at `time`. Throws std::runtime_error on failure.
   void render(OfxTime time, const OfxRectI& window, RenderScale scale);
 
-  // Frees every thread's node (GL context, history textures); the next render of each thread
-  // starts from its plan's first frame. Waits for renders in progress.
+  // Frees every node (GL context, history textures, ring); the next render starts from its
+  // plan's first frame. Renders in progress keep theirs until they end.
   void purgeCaches();
+  // The end of a sequence render: frees the idle nodes but the one used last.
+  void endSequence();
+  // Nodes that exist now and the most that existed at once (tests).
+  std::size_t nodes() const { return pool_.size(); }
+  std::size_t peakNodes() const { return pool_.peakSize(); }
 
  private:
-  struct ThreadHistory {
-    std::mutex mutex;              // held by the render using it, and by purgeCaches
-    taa_node* node = nullptr;
-    std::optional<int> lastFrame;  // history mode: frame whose result the node holds
-    int startFrame = 0;            // history mode: the frame that history started from
-    std::map<int, OfxRectI> ring;  // window mode: frames in the node's ring, their bounds
-    FrameRange range;              // window mode: the Source clip's range they were pushed for
-    std::optional<PluginSettings> settings;
-    RenderScale scale;
-    OfxRectI bounds{};             // of the resolved frame
-    ~ThreadHistory();
-    void forget();  // destroys the node and what it held
-  };
-
   FrameRange sourceRange(int frame) const;  // the Source clip's, [frame, frame] if unknown
-  std::shared_ptr<ThreadHistory> historyOfThisThread();
-  void renderHistory(ThreadHistory& history, const TemporalPlan& plan,
-                     const PluginSettings& settings, RenderScale scale) const;
-  void renderWindow(ThreadHistory& history, const TemporalPlan& plan, FrameRange range,
+  void renderHistory(NodeSlot& history, const TemporalPlan& plan, const PluginSettings& settings,
+                     RenderScale scale) const;
+  void renderWindow(NodeSlot& history, const TemporalPlan& plan, FrameRange range,
                     const PluginSettings& settings, RenderScale scale) const;
   // Fetches the frame's images, pushes them into the node and returns the Source's bounds.
-  OfxRectI pushFrame(ThreadHistory& history, int frame, const PluginSettings& settings,
+  OfxRectI pushFrame(NodeSlot& history, int frame, const PluginSettings& settings,
                      RenderScale scale) const;
-  void writeOutput(const ThreadHistory& history, OfxTime time, const OfxRectI& window) const;
+  void writeOutput(const NodeSlot& history, OfxTime time, const OfxRectI& window) const;
 
   OfxImageEffectHandle effect_;
   OfxImageClipHandle source_ = nullptr, depth_ = nullptr, motion_ = nullptr, output_ = nullptr;
-  std::mutex historiesMutex_;
-  std::map<std::thread::id, std::shared_ptr<ThreadHistory>> histories_;
+  NodePool pool_;
 };
 
 }  // namespace taa::ofx

@@ -157,6 +157,7 @@ struct OfxMessageSuiteV2 {
 #define kOfxImageEffectActionGetFramesNeeded "OfxImageEffectActionGetFramesNeeded"
 #define kOfxImageEffectActionGetClipPreferences "OfxImageEffectActionGetClipPreferences"
 #define kOfxImageEffectActionRender "OfxImageEffectActionRender"
+#define kOfxImageEffectActionEndSequenceRender "OfxImageEffectActionEndSequenceRender"
 
 // Contexts, clips, depths, components.
 #define kOfxImageEffectContextFilter "OfxImageEffectContextFilter"

@@ -83,6 +83,13 @@ OfxStatus purgeCaches(OfxImageEffectHandle effect) {
   return kOfxStatOK;
 }
 
+OfxStatus endSequenceRender(OfxImageEffectHandle effect) {
+  Instance* instance = instanceOf(effect);
+  if (!instance) return kOfxStatErrBadHandle;
+  instance->endSequence();
+  return kOfxStatOK;
+}
+
 OfxStatus framesNeeded(OfxImageEffectHandle effect, OfxPropertySetHandle inArgs,
                        OfxPropertySetHandle outArgs) {
   Instance* instance = instanceOf(effect);
@@ -124,6 +131,7 @@ OfxStatus dispatch(const char* action, OfxImageEffectHandle effect, OfxPropertyS
   if (a == kOfxActionDestroyInstance) return destroyInstance(effect);
   if (a == kOfxActionInstanceChanged) return instanceChanged(effect, inArgs);
   if (a == kOfxActionPurgeCaches) return purgeCaches(effect);
+  if (a == kOfxImageEffectActionEndSequenceRender) return endSequenceRender(effect);
   if (a == kOfxImageEffectActionGetFramesNeeded) return framesNeeded(effect, inArgs, outArgs);
   if (a == kOfxImageEffectActionGetClipPreferences) return clipPreferences(effect, outArgs);
   if (a == kOfxImageEffectActionRender) return render(effect, inArgs);

@@ -1,6 +1,6 @@
 #include "util/image.h"
 
-#include <OpenImageIO/imageio.h>
+#include <algorithm>
 
 namespace taa {
 TypedImage::TypedImage(int width, int height, int channels, SampleType type) {
@@ -34,9 +34,9 @@ Image TypedImage::toFloat() const {
   if (const Image* image = floats()) return *image;
   const HalfImage& half = *halves();
   Image image(half.width, half.height, half.channels);
-  // OIIO's converter: libImath's half tables are not a dependency of taa_core.
-  OIIO::convert_pixel_values(OIIO::TypeHalf, half.pixels.data(), OIIO::TypeFloat,
-                             image.pixels.data(), int(half.pixels.size()));
+  // Imath's exact widening (the OpenFX bundle links no OpenImageIO: this was its one call).
+  std::transform(half.pixels.begin(), half.pixels.end(), image.pixels.begin(),
+                 [](Imath::half h) { return float(h); });
   return image;
 }
 

@@ -1,0 +1,20 @@
+# Fails when the OpenFX bundle BUNDLE needs a shared library beyond OpenColorIO, Imath and the C
+# and C++ runtimes: a host loads every one of them (and theirs) when it loads the bundle.
+# Run: cmake -DBUNDLE=path -P this_file
+execute_process(COMMAND readelf -d ${BUNDLE} OUTPUT_VARIABLE dynamic RESULT_VARIABLE result)
+if(NOT result EQUAL 0)
+  message(FATAL_ERROR "readelf failed on ${BUNDLE}")
+endif()
+string(REGEX MATCHALL "Shared library: \\[[^]]+\\]" needed "${dynamic}")
+foreach(entry IN LISTS needed)
+  string(REGEX REPLACE "Shared library: \\[([^]]+)\\]" "\\1" library "${entry}")
+  if(NOT library MATCHES "^(libOpenColorIO|libImath|libstdc\\+\\+|libm|libgcc_s|libc|ld-linux)")
+    list(APPEND unexpected "${library}")
+  endif()
+endforeach()
+if(unexpected)
+  list(JOIN unexpected ", " text)
+  message(FATAL_ERROR "the bundle needs ${text}: hosts would load them with it")
+endif()
+list(LENGTH needed count)
+message(STATUS "the bundle needs ${count} libraries, none beyond OpenColorIO, Imath and runtimes")
