@@ -260,6 +260,44 @@ TEST(BlenderAddon, TaatoolWithNoFlagsEqualsTheSidecarRunBitForBit) {
   }
 }
 
+// The README's first hour (issue 24): install, render through the add-on, resolve with the
+// README's command and look, with $OCIO set to Blender's own config as an artist's shell has
+// it. The resolve runs (the bracket is taa's own) and gives the pixels of the run without
+// $OCIO, bit for bit; the header says the colour is Blender's scene-linear "Linear".
+TEST(BlenderAddon, TheReadmesFirstHourWorksWithBlendersOcio) {
+  constexpr const char* kBlenderConfig =
+      "/usr/share/blender/datafiles/colormanagement/config.ocio";
+  const fs::path folder = rendered().folder / "first_hour";
+  fs::create_directories(folder);
+  const ToolRun plain = runTaatool(
+      {"--preset", "cycles", rendered().pattern(), "-o", (folder / "plain" / "o.####.exr").string()},
+      folder);
+  ASSERT_EQ(plain.exitCode, 0) << plain.err;
+  setenv("OCIO", kBlenderConfig, 1);
+  const ToolRun studio = runTaatool(
+      {"--preset", "cycles", rendered().pattern(), "-o", (folder / "ocio" / "o.####.exr").string()},
+      folder);
+  const ToolRun look = test::runProgram(
+      "oiiotool", {(folder / "ocio" / "o.0002.exr").string(), "--ch",
+                   "ViewLayer.Combined.R,ViewLayer.Combined.G,ViewLayer.Combined.B",
+                   "--colorconvert", "Linear", "sRGB", "-o", (folder / "look.png").string()},
+      folder);
+  unsetenv("OCIO");
+  ASSERT_EQ(studio.exitCode, 0) << studio.err;
+  for (int f = kFirst; f <= kLast; ++f) {
+    char name[16];
+    std::snprintf(name, sizeof name, "o.%04d.exr", f);
+    EXPECT_TRUE(readPixels((folder / "plain" / name).string()) ==
+                readPixels((folder / "ocio" / name).string()))
+        << name;
+  }
+  auto in = OIIO::ImageInput::open((folder / "ocio" / "o.0002.exr").string());
+  ASSERT_TRUE(in);
+  EXPECT_EQ(in->spec().get_string_attribute("taa:colorspace"), "Linear");
+  EXPECT_EQ(look.exitCode, 0) << look.err;
+  EXPECT_TRUE(fs::exists(folder / "look.png"));
+}
+
 TEST(BlenderAddon, AScenePastFixingIsRefusedWithAMessage) {
   const fs::path folder = rendered().folder;
   const ToolRun refused = blender(folder, "refused",
