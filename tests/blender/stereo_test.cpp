@@ -104,9 +104,14 @@ TEST_P(StereoTest, BothViewsInOneRunEachAsIfAlone) {
   for (int frame = 1; frame <= kFrames; ++frame) {
     const Exr both = readExr(dir / "both" / frameName(frame));
     EXPECT_EQ(multiView(both.spec), (std::vector<std::string>{"left", "right"}));
+    // The views are part of the options a resumed farm run compares.
+    const std::string options = both.spec.get_string_attribute("taa:options");
+    EXPECT_NE(options.find("; views=left,right"), std::string::npos) << options;
     for (const std::string view : {"left", "right"}) {
       const Exr alone = readExr(dir / view / frameName(frame));
       EXPECT_EQ(multiView(alone.spec), std::vector<std::string>{view});
+      EXPECT_NE(alone.spec.get_string_attribute("taa:options").find("; views=" + view),
+                std::string::npos);
       for (const char* c : {"R", "G", "B", "A"}) {
         const std::string name = "ViewLayer.Combined." + view + "." + c;
         EXPECT_EQ(both.channel(name), alone.channel(name)) << name << " frame " << frame;

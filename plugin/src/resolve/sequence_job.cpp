@@ -143,6 +143,10 @@ std::string outputOptionsAttribute(const SequenceJob& job) {
   } else if (job.jitterSource == JobJitterSource::Sidecar) {
     text += "; jitter-source=sidecar";
   }
+  // The views resolved: a file of one view is not a complete frame of a run over both.
+  for (std::size_t v = 0; v < job.views.size(); ++v) {
+    text += (v == 0 ? "; views=" : ",") + job.views[v].name;
+  }
   return text;
 }
 

@@ -118,7 +118,7 @@ std::vector<InputFile> frameInputFiles(const io::AovLayout& layout, int frame);
 std::vector<int> availableInputFrames(const io::AovLayout& layout);
 
 // The output files' taa:options attribute for `job`: every resolve option as "name=value; ...",
-// and the jitter source when it is not the options'. io::checkOutputComplete compares it, so a
+// the jitter source when it is not the options', and a multi-view job's views. io::checkOutputComplete compares it, so a
 // frame resolved with other options is not taken for this job's.
 std::string outputOptionsAttribute(const SequenceJob& job);
 
