@@ -280,7 +280,13 @@ void main() {
   }
   addSample(ownSum, 1.0);  // weights already applied
   gWeight += ownWeight - 1.0;
+#if LINEAR_SUM
+  // In linear light a lobe beside a highlight (or a large negative value) is no small
+  // overshoot: the reconstruction stays within its samples.
+  filtered.rgb = clamp(filtered.rgb, rgbMin, rgbMax);
+#else
   filtered.rgb = limitOvershoot(filtered.rgb, rgbMin, rgbMax);
+#endif
   addSample(filtered, uReconstructionWeight);
 
   // The surfaces the pixel may be looking at: the 3x3's near one and, when it spans two

@@ -36,8 +36,8 @@ std::string blenderSceneDir(const BlenderSettings& settings, const BlenderReques
 
 // Renders what is not cached yet, then loads the reference: truth and SSAA-N as Blender
 // rendered them, the raw input's Combined pass, flow and disocclusion from the unjittered
-// "aux" frames and the camera sidecar (cycles_reference.h). taatool reads the input with
-// `--preset cycles --camera-sidecar camera.json`, as a user would.
+// "aux" frames and the camera sidecar (cycles_reference.h). The input was rendered through
+// taa's Blender add-on: taatool reads it with `--preset cycles` alone, as a user would.
 PreparedScene prepareBlenderScene(const BlenderSettings& settings, const BlenderRequest& request,
                                   const std::string& description, const std::string& logPath,
                                   const ScoreOptions& options);

@@ -86,11 +86,13 @@ struct WindowOptions {
   float reconstructionWeight = 0.1f;
   // Sum the samples' values in linear light (the input's values) instead of the bracket's
   // working space, whose average biases every edge between bright and dark; the colour tests
-  // still decide on a compressed luma. Forces a shader rebuild.
-  bool linear = false;
+  // still decide on a compressed luma. Forces a shader rebuild. On by default: +0.65 dB on the
+  // real-render yardstick together with opaqueMoving, no scene lower (docs/TUNING.md, sweep 7).
+  bool linear = true;
   // A static sample landing where t's own nearest sample is a moving object (and not in front
-  // of it) is hidden: a moving object stays opaque where it touches the floor it slides on.
-  bool opaqueMoving = false;
+  // of it) is hidden: a moving object stays opaque where it touches the floor it slides on
+  // (cycles_contact: +2.4 dB inside the moving box).
+  bool opaqueMoving = true;
   // Each side of a pixel's window ends at the first source frame whose samples disagree with
   // what the nearer frames gave (the colour test): a long window where the shot holds still,
   // a short one where shading changes.
