@@ -3,7 +3,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <functional>
 #include <limits>
 
@@ -466,6 +469,49 @@ TEST(ReadFrameErrors, ADataWindowBeyondTheTextureLimitIsRefused) {
       << error.what();
   writeTestExr(path, {"R", "G", "B", "A"}, [](int, int) { return 0.5f; }, kMaxImageSide, 2);
   EXPECT_EQ(readFrame(layout, 1).color.width(), kMaxImageSide);
+}
+
+// Widens the dataWindow attribute of the EXR at `path` by `extra` columns in place, as a damaged
+// or hand-edited header does: the chunks stay as written, too short for the new window.
+void widenDataWindow(const std::string& path, int extra) {
+  std::fstream file(path, std::ios::in | std::ios::out | std::ios::binary);
+  std::string bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+  const std::string name("dataWindow\0box2i\0", 17);
+  const std::size_t at = bytes.find(name);
+  ASSERT_NE(at, std::string::npos);
+  const std::size_t xMaxAt = at + name.size() + 4 + 8;  // after the size, xMin and yMin
+  std::int32_t xMax = 0;
+  std::memcpy(&xMax, bytes.data() + xMaxAt, 4);
+  xMax += extra;
+  file.seekp(std::streamoff(xMaxAt));
+  file.write(reinterpret_cast<const char*>(&xMax), 4);
+}
+
+// Issue 25: OpenEXR's C++ reader fills the columns a header claims beyond the stored pixels
+// with zeros, without an error; the reader refuses such a file, compressed or not, and reads
+// the same file undamaged.
+TEST(ReadFrameErrors, ADataWindowWiderThanThePixelDataIsRefused) {
+  const std::string folder = scratchFolder();
+  for (const char* compression : {"zip", "none"}) {
+    SCOPED_TRACE(compression);
+    const std::string path = folder + "/" + compression + ".exr";
+    OIIO::ImageSpec spec = makeSpec(32, 20, {"R", "G", "B", "A"});
+    spec.attribute("compression", compression);
+    std::vector<float> pixels(32 * 20 * 4);
+    for (std::size_t i = 0; i < pixels.size(); ++i) pixels[i] = std::sin(float(i));
+    writeImage(path, spec, pixels);
+    AovLayout layout;
+    layout.color = {path, {"R", "G", "B", "A"}};
+    EXPECT_EQ(readFrame(layout, 3).color.width(), 32);
+    widenDataWindow(path, 32);
+    const Error error = errorOf([&] { readFrame(layout, 3); });
+    EXPECT_EQ(error.context().file, path);
+    EXPECT_EQ(error.context().frame, 3);
+    EXPECT_TRUE(contains(error.what(), "the color file's data window is wider than its pixel "
+                                       "data"))
+        << error.what();
+    EXPECT_TRUE(contains(error.what(), "64x20")) << error.what();
+  }
 }
 
 TEST(ReadFrameErrors, TextFileNamedExrIsRejected) {

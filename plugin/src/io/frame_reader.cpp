@@ -17,6 +17,7 @@
 
 #include "io/aov_conversion.h"
 #include "io/camera_note.h"
+#include "io/exr_chunk_check.h"
 #include "io/file_presence.h"
 #include "io/layout_hint.h"
 #include "io/part_channels.h"
@@ -100,6 +101,11 @@ OpenExr openExr(const std::string& path, const std::string& aovName, int frame) 
     }
   }
   if (parts.empty()) throw Error("the " + aovName + " file has no image part", context);
+  if (const std::string mismatch = firstChunkMismatch(path); !mismatch.empty()) {
+    throw Error("the " + aovName + " file's data window is wider than its pixel data (" +
+                    mismatch + "): a damaged or edited header",
+                context);
+  }
   return {path, std::move(input), std::move(parts)};
 }
 
