@@ -32,6 +32,9 @@
 #ifndef LINEAR_SUM
 #define LINEAR_SUM 0  // 1: the ring holds input values, summed as they are (linear light);
 #endif                // decisions on a compressed luma (decisionLuma)
+#ifndef PASS_GROUPS
+#define PASS_GROUPS 0  // groups of four pass values summed with the beauty's weights (issue 21)
+#endif
 #ifndef CHAINS
 #define CHAINS 1  // 0: no frame of the window has moving samples; the chains' code is left out
 #endif            // (llvmpipe would run it, masked, for every pixel)
@@ -77,6 +80,27 @@ uniform bool uAdaptive;
 
 layout(location = 0) out vec4 outColor;  // output colour space
 layout(location = 1) out vec4 outDebug;  // weight gathered, rejected fraction, candidates, 0
+
+// The render's other passes (light x factor, factors, averaged data: resolve/pass_plan), four
+// values a texel, one ring of them per group at each frame's pass layer (which, unlike the
+// ring's, never moves). Every sample that enters the beauty's sums enters theirs with the same
+// weight, so a relation that is linear per sample (Combined = the sum of the light passes)
+// holds in the result.
+#if PASS_GROUPS > 0
+uniform sampler2DArray uPasses[PASS_GROUPS];
+uniform int uTargetPassLayer;
+uniform int uSourcePassLayer[MAX_SOURCES];
+layout(location = 2) out vec4 outPasses[PASS_GROUPS];
+vec4 gPassSum[PASS_GROUPS];
+vec4 gSourcePassSum[PASS_GROUPS];
+int gSourcePassLayer;
+#define ADD_PASSES(sums, n, layer, weight)                                   \
+  for (int g = 0; g < PASS_GROUPS; ++g) {                                    \
+    sums[g] += (weight) * texelFetch(uPasses[g], ivec3((n), (layer)), 0);    \
+  }
+#else
+#define ADD_PASSES(sums, n, layer, weight)
+#endif
 
 ivec2 gSize;
 vec2 gPosition;
@@ -180,6 +204,9 @@ void addStaticSample(ivec2 corner, ivec2 step, bool skip, ivec2 taken, float fra
   gSum += thinWeight * entry.colour;
   gWeight += thinWeight;
   addSourceSample(entry.colour, thin ? 0.0 : kept);
+  ivec2 texel = clamp(n, ivec2(0), gSize - 1);
+  ADD_PASSES(gPassSum, texel, gSourcePassLayer, thinWeight)
+  ADD_PASSES(gSourcePassSum, texel, gSourcePassLayer, thin ? 0.0 : kept)
 }
 
 // The static samples of the current source in the 2x2 block at `corner` (with `skip`, those
@@ -213,6 +240,8 @@ void addMovingSample(ivec2 corner, ivec2 step, vec2 chained, bool alive) {
   bool candidate = alive && onScreen(n) && entry.depth < 0.0 && weight >= 1e-3;
   gCandidates += candidate ? 1.0 : 0.0;
   addSourceSample(entry.colour, candidate ? weight : 0.0);
+  ADD_PASSES(gSourcePassSum, clamp(n, ivec2(0), gSize - 1), gSourcePassLayer,
+             candidate ? weight : 0.0)
 }
 
 // The moving samples of the current source in the 2x2 block around the chained point, if the
@@ -244,6 +273,13 @@ void main() {
   gFarthest = 0.0;
   gThinDepth = 1.0 / 0.0;
   vec3 rgbMin = vec3(1e30), rgbMax = vec3(-1e30);
+#if PASS_GROUPS > 0
+  vec4 filteredPasses[PASS_GROUPS];
+  for (int g = 0; g < PASS_GROUPS; ++g) {
+    gPassSum[g] = vec4(0.0);
+    filteredPasses[g] = vec4(0.0);
+  }
+#endif
   float depths[9];
   float movingDepth = 1.0 / 0.0;
   ivec2 movingAt = pixel;  // the nearest moving sample of the 3x3, if any
@@ -272,6 +308,8 @@ void main() {
       float w = wanted == n ? spatialWeight(vec2(n) + 0.5 + uTargetJitter - gPosition, uSigma)
                             : 0.0;
       float y = decisionLuma(colour);
+      ADD_PASSES(gPassSum, n, uTargetPassLayer, w)
+      ADD_PASSES(filteredPasses, n, uTargetPassLayer, uReconstruction[3 * (dy + 1) + dx + 1])
       ownWeight += w;
       ownSum += w * colour;
       ownLumaSum += w * y;
@@ -288,6 +326,9 @@ void main() {
   filtered.rgb = limitOvershoot(filtered.rgb, rgbMin, rgbMax);
 #endif
   addSample(filtered, uReconstructionWeight);
+#if PASS_GROUPS > 0
+  for (int g = 0; g < PASS_GROUPS; ++g) gPassSum[g] += uReconstructionWeight * filteredPasses[g];
+#endif
 
   // The surfaces the pixel may be looking at: the 3x3's near one and, when it spans two
   // depths, its far one. Each surface's depth is the mean of its samples', which on a slanted
@@ -357,6 +398,10 @@ void main() {
     gSourceSum = vec4(0.0);
     gSourceLumaSum = 0.0;
     gSourceLumaSquares = 0.0;
+#if PASS_GROUPS > 0
+    gSourcePassLayer = uSourcePassLayer[k];
+    for (int g = 0; g < PASS_GROUPS; ++g) gSourcePassSum[g] = vec4(0.0);
+#endif
     if (uSourceHasCamera[k] != 0 && uTargetHasCamera) {
       // The near surface's block, then, where the pixel needs it, a second surface's: the
       // 3x3's far one, else a thin feature found in nearer frames (or in this block). A loop
@@ -418,6 +463,9 @@ void main() {
       behindOpen = behindOpen && !(closes && offsetFrames < 0);
       aheadOpen = aheadOpen && !(closes && offsetFrames > 0);
       gSum += agreement * frameWeight * gSourceSum;
+#if PASS_GROUPS > 0
+      for (int g = 0; g < PASS_GROUPS; ++g) gPassSum[g] += agreement * frameWeight * gSourcePassSum[g];
+#endif
       gWeight += agreement * frameWeight * gSourceWeight;
       gDisagreeing += (1.0 - agreement) * gSourceWeight;
       within += gSourceLumaSquares - gSourceWeight * mean * mean;
@@ -432,6 +480,9 @@ void main() {
   outColor = finiteOutput(taaFromWorking(taaToWorking(working)));
 #else
   outColor = finiteOutput(taaFromWorking(working));
+#endif
+#if PASS_GROUPS > 0
+  for (int g = 0; g < PASS_GROUPS; ++g) outPasses[g] = finiteOutput(gPassSum[g] / gWeight);
 #endif
   // Rejected: hidden candidates, and the weight of sources left out for their colour.
   float rejected = gHidden + gDisagreeing;

@@ -255,7 +255,8 @@ TEST(BlenderAddon, TaatoolWithNoFlagsEqualsTheSidecarRunBitForBit) {
     std::snprintf(name, sizeof name, "o.%04d.exr", f);
     const std::vector<float> a = readPixels((folder / "header" / name).string());
     const std::vector<float> b = readPixels((folder / "sidecar" / name).string());
-    ASSERT_EQ(a.size(), std::size_t(kWidth) * kHeight * 4) << name;
+    // The colour, then the render's depth and vectors (every pass is written beside it).
+    ASSERT_EQ(a.size(), std::size_t(kWidth) * kHeight * 9) << name;
     EXPECT_TRUE(a == b) << name << ": the header run differs from the sidecar run";
   }
 }

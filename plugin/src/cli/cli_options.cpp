@@ -98,6 +98,7 @@ CommandLine parseCommandLine(const std::vector<std::string>& args) {
   // Convention flags edit the layout after the preset, so they always win over it.
   using LayoutEdit = std::function<void(io::AovLayout&)>;
   std::vector<LayoutEdit> edits;
+  std::vector<io::ChannelKindRule> aovRules;  // --aov, in the order given
   auto edit = [&](LayoutEdit e) { edits.push_back(std::move(e)); };
 
   using Handler = std::function<void(const std::string&)>;
@@ -201,6 +202,7 @@ CommandLine parseCommandLine(const std::vector<std::string>& args) {
        [&](const std::string& v) {
          for (const std::string& p : io::parseChannelList(v)) layout.passthrough.push_back(p);
        }},
+      {"--aov", [&](const std::string& v) { aovRules.push_back(io::parseChannelKindRule(v)); }},
       {"--reset-frames",
        [&](const std::string& v) {
          for (int frame : io::parseFrameRange(v)) cl.job.resetFrames.insert(frame);
@@ -299,6 +301,15 @@ CommandLine parseCommandLine(const std::vector<std::string>& args) {
   if (!cl.job.outputChannels.empty() && cl.job.outputChannels.size() != 4) {
     throw Error("--out-ch expects 4 channel names (R, G, B, A)");
   }
+  // Every channel of the colour part beside the colour is resolved by its kind in the window
+  // mode (issue 21); the history mode writes the colour alone and refuses to be asked for more.
+  layout.passRules = aovRules;
+  if (cl.job.resolve.mode == ResolveMode::Window) {
+    layout.passes = true;
+  } else if (!aovRules.empty()) {
+    throw Error("--aov: passes are resolved beside the colour by the window mode only "
+                "(--mode window); the history mode writes the colour alone");
+  }
   requireOptionsTakeEffect(typed, preset, cl.job);
   return cl;
 }
@@ -362,6 +373,11 @@ void resolveFrameList(CommandLine& cl) {
     cl.job.availableFrames = availableInputFrames(cl.job.layout);
   }
   selectViews(cl);
+  // A multi-view file's passes stay out for now: its other views' channels share the part.
+  if (cl.job.views.size() > 1) {
+    cl.job.layout.passes = false;
+    for (auto& view : cl.job.views) view.layout.passes = false;
+  }
 }
 
 // `words` wrapped to lines of at most `width` columns, each after `indent` spaces.
@@ -499,6 +515,12 @@ taa:options, the resolve options used):
   --out-ch R,G,B,A         output color channel names (default: the color input's names)
   --passthrough PATTERNS   copy channels of the color file (part) whose names match these
                            comma-separated globs untouched into the output: 'ViewLayer.*,*.Z'
+  --aov PATTERN=KIND       (window mode) the kind of the channels matching a glob, first match
+                           wins: light, factor, average, normal, nearest, cryptomatte, copy,
+                           drop. Without it every channel of the color part beside the color
+                           is resolved by the kind its pass name has (light passes with the
+                           beauty's weights, data never blended); '*=drop' writes the color
+                           alone
   --compression NAME       none, rle, zips, zip, piz, pxr24, b44, b44a, dwaa, dwab (default zip);
                            zip and zips are zlib level 1 (fast), zip:N picks level N (1-9)
 

@@ -30,4 +30,11 @@ std::vector<std::string> parseChannelList(const std::string& text) {
   return names;
 }
 
+std::vector<ChannelKindRule> passRulesOf(const AovLayout& layout) {
+  std::vector<ChannelKindRule> rules;
+  for (const std::string& p : layout.passthrough) rules.push_back({p, ChannelKind::Copy});
+  rules.insert(rules.end(), layout.passRules.begin(), layout.passRules.end());
+  return rules;
+}
+
 }  // namespace taa::io

@@ -8,6 +8,8 @@
 #include <utility>
 #include <vector>
 
+#include "io/channel_kinds.h"
+
 namespace taa::io {
 
 // One AOV: a file pattern (empty = the color file), the channel names to read from it and, for
@@ -83,12 +85,20 @@ struct AovLayout {
   // Glob patterns (fnmatch) on channel names of the color file's part: channels copied
   // through to the output untouched (e.g. "ViewLayer.*", "*.Z").
   std::vector<std::string> passthrough;
+  // Read every other channel of the color file's part as a pass (io/channel_kinds), to be
+  // resolved by its kind; `passRules` come first, pass-through patterns count as "copy".
+  bool passes = false;
+  std::vector<ChannelKindRule> passRules;
 };
 
 // The Blender Cycles multi-layer layout for render layer `layer` ("ViewLayer"): all AOVs in the
 // color file, <layer>.Combined.RGBA, <layer>.Depth.Z (planar, 1e10 = no hit),
 // <layer>.Vector.XY (pixels, y up, X/Y = previous - current).
 AovLayout cyclesLayout(const std::string& colorPattern, const std::string& layer = "ViewLayer");
+
+// The rules that give the layout's passes their kinds: pass-through patterns as "copy", then
+// `passRules`.
+std::vector<ChannelKindRule> passRulesOf(const AovLayout& layout);
 
 // Splits "R,G,B,A" into names; empty items are an error (taa::Error).
 std::vector<std::string> parseChannelList(const std::string& text);

@@ -414,6 +414,27 @@ void addPassthroughRead(PartReads& reads, OpenExr& file, int part,
             extra.image.channels);
 }
 
+// Every channel of the color part but the color's own and those dropped, in file order, types
+// kept: the passes resolved beside the beauty (AovLayout::passes).
+void addPassesRead(PartReads& reads, OpenExr& file, int part, const AovLayout& layout, int frame,
+                   ExtraChannels& passes) {
+  const std::vector<ChannelKindRule> rules = passRulesOf(layout);
+  const OIIO::ImageSpec& spec = file.parts[std::size_t(part)];
+  for (int c = 0; c < spec.nchannels; ++c) {
+    const std::string& name = spec.channelnames[std::size_t(c)];
+    const auto& color = layout.color.channels;
+    if (std::find(color.begin(), color.end(), name) != color.end()) continue;
+    if (channelKind(name, rules) == ChannelKind::Drop) continue;
+    passes.names.push_back(name);
+    passes.formats.push_back(spec.channelformat(c) == OIIO::TypeHalf ? OIIO::TypeHalf
+                                                                    : OIIO::TypeFloat);
+  }
+  if (passes.names.empty()) return;
+  passes.image = Image(spec.width, spec.height, int(passes.names.size()));
+  reads.add(file, part, passes.names, "color", frame, OIIO::TypeFloat, passes.image.pixels.data(),
+            passes.image.channels);
+}
+
 }  // namespace
 
 FrameData readFrame(const AovLayout& layout, int frame, const CameraInputs& cameras) {
@@ -440,7 +461,11 @@ FrameData readFrame(const AovLayout& layout, int frame, const CameraInputs& came
       addColorRead(reads, colorFile, colorPart, layout.color, frame, data.color);
   data.window = rasterWindow(data.colorSpec);
   chooseCamera(data, cameras);
-  addPassthroughRead(reads, colorFile, colorPart, layout.passthrough, frame, data.passthrough);
+  if (layout.passes) {
+    addPassesRead(reads, colorFile, colorPart, layout, frame, data.passes);
+  } else {
+    addPassthroughRead(reads, colorFile, colorPart, layout.passthrough, frame, data.passthrough);
+  }
 
   const OpenExr* depthFile = nullptr;
   if (layout.depth) {

@@ -43,6 +43,9 @@ struct FrameData {
   int colorPart = 0;              // which part of the colour file that is
   std::string colorPath;
   ExtraChannels passthrough;      // the layout's pass-through channels, types kept
+  // With AovLayout::passes: every other channel of the color part that is not dropped, in file
+  // order, types kept (the color's own channels are not among them).
+  ExtraChannels passes;
   // A multi-view job's other views of this frame (the job reads them: resolve/sequence_job),
   // each read with its view's layout; this one is the first view.
   std::vector<FrameData> otherViews;

@@ -72,6 +72,7 @@ AovLayout layoutForView(const AovLayout& base, const FileViews& views, std::size
   if (layout.depth) forView(*layout.depth, layout.depth->pattern.empty());
   if (layout.motion) forView(*layout.motion, layout.motion->pattern.empty());
   if (index > 0) layout.passthrough.clear();
+  if (index > 0) layout.passes = false;  // the first view's passes only
   return layout;
 }
 

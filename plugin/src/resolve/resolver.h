@@ -5,6 +5,7 @@
 #include <glm/vec2.hpp>
 
 #include <memory>
+#include <vector>
 
 #include "gl/context.h"
 #include "resolve/camera.h"
@@ -24,6 +25,9 @@ struct ResolveInput {
   const FrameCamera* camera = nullptr;  // optional: enables camera motion with the previous one
   RasterWindow window;            // where the pixels sit in the display window (for the camera)
   NdcConvention ndc = NdcConvention::ZeroOneYDown;
+  // Window mode: the frame's pass values, RGBA float per group (resolve/pass_plan), as many as
+  // WindowResolver::setPassGroups said.
+  std::vector<const float*> passGroups;
 };
 
 // Per-pixel diagnostics of the last frame (setDebugOutput): RGBA = (weight given to history,

@@ -17,6 +17,7 @@
 #include "io/stale_temp_files.h"
 #include "resolve/jitter.h"
 #include "resolve/option_registry.h"
+#include "resolve/pass_plan.h"
 #include "resolve/projection_jitter.h"
 #include "resolve/frame_queues.h"
 #include "resolve/resolver.h"
@@ -142,6 +143,16 @@ std::string outputOptionsAttribute(const SequenceJob& job) {
     text += "; jitter-source=header:" + job.jitterAttribute;
   } else if (job.jitterSource == JobJitterSource::Sidecar) {
     text += "; jitter-source=sidecar";
+  }
+  // Passes: whether they are resolved, and by which rules (a resumed run must not take a frame
+  // of the colour alone for one with its passes).
+  if (job.layout.passes && job.resolve.mode == ResolveMode::Window) {
+    text += "; passes=";
+    const std::vector<io::ChannelKindRule> rules = io::passRulesOf(job.layout);
+    if (rules.empty()) text += "by-name";
+    for (std::size_t r = 0; r < rules.size(); ++r) {
+      text += (r ? "," : "") + rules[r].pattern + "=" + io::kindName(rules[r].kind);
+    }
   }
   // The views resolved: a file of one view is not a complete frame of a run over both.
   for (std::size_t v = 0; v < job.views.size(); ++v) {
@@ -419,6 +430,7 @@ struct JobRun {
       colorNames.insert(colorNames.end(), viewNames[v].begin(), viewNames[v].end());
     }
     io::appendExtraChannels(extra, passthroughWithout(data.passthrough, colorNames));
+    if (!data.passes.names.empty()) io::appendExtraChannels(extra, data.passes);
     if (!debug.names.empty()) io::appendExtraChannels(extra, debug);
     return [path = io::expandFramePattern(job.outputPattern, data.frame),
             output = std::move(output), spec = std::move(spec), this, extra = std::move(extra),
@@ -555,6 +567,9 @@ void runWindow(JobRun& run, gl::Context& context) {
   });
   std::map<int, io::FrameData> waiting;  // read output frames, pixels dropped once uploaded
   bool toldVectorsOnly = false;
+  // The passes (issue 21): planned from the first frame read, every frame the same channels.
+  std::optional<PassPlan> passPlan;
+  std::string passFile;  // the file the plan came from, for the message when one differs
   std::vector<int> inRing;
 
   for (int index = 0; index < int(outputs.size()); ++index) {
@@ -578,8 +593,33 @@ void runWindow(JobRun& run, gl::Context& context) {
                           "their motion vectors only");
         toldVectorsOnly = true;
       }
+      std::vector<std::vector<float>> passGroups;
+      if (!passPlan) {
+        passPlan = planPasses(data.passes.names, data.passes.formats,
+                              io::passRulesOf(*run.layouts.front()));
+        passFile = data.colorPath;
+        resolver.setPassGroups(passPlan->halfGroups);
+        if (run.callbacks.detail && !passPlan->empty()) {
+          std::string kinds;
+          for (std::size_t c = 0; c < passPlan->names.size(); ++c) {
+            kinds += (c ? ", " : "") + passPlan->names[c] + " " + io::kindName(passPlan->kinds[c]);
+          }
+          run.callbacks.detail("passes resolved beside the colour: " + kinds);
+        }
+      } else if (data.passes.names != passPlan->names) {
+        throw Error("the frame's pass channels differ from those of " + passFile +
+                        " (every frame of a run must hold the same channels)",
+                    {data.colorPath, f, ""});
+      }
+      if (!passPlan->empty()) {
+        passGroups = packPassGroups(data.passes.image, *passPlan);
+        data.passes.image = keptChannels(data.passes.image, *passPlan);
+      }
       for (std::size_t v = 0; v < resolvers.size(); ++v) {
-        const ResolveInput input = run.inputOf(JobRun::view(data, v), v == 0);
+        ResolveInput input = run.inputOf(JobRun::view(data, v), v == 0);
+        if (v == 0) {
+          for (const std::vector<float>& group : passGroups) input.passGroups.push_back(group.data());
+        }
         try {
           resolvers[v]->addFrame(f, input);
         } catch (const Error& e) {
@@ -613,6 +653,10 @@ void runWindow(JobRun& run, gl::Context& context) {
     }
     TypedImage output = std::move(views.front());
     views.erase(views.begin());
+    if (passPlan && !passPlan->empty()) {
+      // The passes in the file's order and types, after the colour.
+      data.passes.image = finishPasses(resolver.lastPasses(), data.passes.image, *passPlan);
+    }
     io::ExtraChannels debug;
     if (job.debugLayers) debug = windowDebugChannels(resolver.lastDebug(), data.nonFiniteMask);
     writes.push(run.writeOf(data, std::move(output), std::move(debug), views), index);

@@ -31,6 +31,9 @@ enum TextureUnit : int {
 };
 
 constexpr int kMaxSources = 32;  // window_gather.frag's MAX_SOURCES: K up to 16
+// Pass groups one gather writes besides the colour and diagnostics: 8 draw buffers, GL's
+// guaranteed minimum, less those two.
+constexpr int kPassGroupsPerDraw = 6;
 
 // How window_classify.frag decides which samples are static.
 enum class Classify : int { NoCamera = 0, PreviousCamera = 1, NextFrame = 2, AllStatic = 3 };
@@ -78,6 +81,9 @@ struct WindowResolver::Impl {
   // The gather with (index 1) and without (0) the chains of moving samples: a window whose
   // frames have no moving sample uses the one without, which llvmpipe runs in half the time.
   gl::Program gatherPrograms[2];
+  // And with PASS_GROUPS n (1 to kPassGroupsPerDraw), built when first needed: [chains][n - 1].
+  std::vector<std::string> gatherPrefix[2];
+  std::map<std::pair<int, int>, gl::Program> passPrograms;
   gl::AnySamplesQuery movingQuery;
   color::OcioGpuResources toWorkingLuts, fromWorkingLuts;
   color::OcioGpuResources gatherToWorkingLuts;  // linear sums: after fromWorkingLuts' units
@@ -98,6 +104,15 @@ struct WindowResolver::Impl {
   gl::Framebuffer gatherTarget;
   bool gatherHasDebug = false;
 
+  // Passes (setPassGroups): one ring per group of four values, a layer per frame that stays
+  // put (the colour ring's layers swap as frames are classified); the sums of the last frame.
+  std::vector<bool> passHalf;
+  std::vector<gl::TextureArray> passRings;
+  std::vector<int> freePassLayers;
+  std::vector<gl::Texture> passOutputs;
+  std::vector<gl::Framebuffer> passTargets;  // per draw: output, debug, its groups' sums
+  std::vector<Image> lastPasses;
+
   // How a frame's samples were last classified (window_classify.frag's modes).
   struct Slot {
     int layer = 0;
@@ -109,6 +124,7 @@ struct WindowResolver::Impl {
     NdcConvention ndc = NdcConvention::ZeroOneYDown;
     bool hasDepth = false, hasMotion = false;
     bool hasMoving = false;  // any sample classified moving
+    int passLayer = -1;
   };
   std::map<int, Slot> slots;
   std::vector<int> freeLayers;
@@ -140,6 +156,7 @@ struct WindowResolver::Impl {
       std::vector<std::string> prefix = {"#define CHAINS " + std::to_string(chains), linearDefine,
                                          bracket.fromWorking()->getShaderText()};
       if (linear) prefix.push_back(bracket.toWorking()->getShaderText());
+      gatherPrefix[chains] = prefix;
       gatherPrograms[chains] = gl::Program(gl, gl::embeddedShaderSource("fullscreen.vert"),
                                            gl::embeddedShaderSource("window_gather.frag", prefix));
     }
@@ -160,6 +177,44 @@ struct WindowResolver::Impl {
       p.set("uWorkingRange", range.lo, range.hi);
     }
     movingQuery = gl::AnySamplesQuery(gl);
+    passPrograms.clear();
+  }
+
+  // The gather with `groups` pass groups (0: the beauty alone).
+  const gl::Program& gatherProgram(int chains, int groups) {
+    if (groups == 0) return gatherPrograms[chains];
+    const auto key = std::make_pair(chains, groups);
+    auto found = passPrograms.find(key);
+    if (found != passPrograms.end()) return found->second;
+    std::vector<std::string> prefix = gatherPrefix[chains];
+    prefix.insert(prefix.begin(), "#define PASS_GROUPS " + std::to_string(groups));
+    gl::Program p(gl, gl::embeddedShaderSource("fullscreen.vert"),
+                  gl::embeddedShaderSource("window_gather.frag", prefix));
+    fromWorkingLuts.setUniforms(p);
+    if (options.window.linear) gatherToWorkingLuts.setUniforms(p);
+    const color::OcioBracket::Range range =
+        options.window.linear ? color::OcioBracket::Range{-65504.0f, 65504.0f}
+                              : color::OcioBracket(options.color).workingRange();
+    p.set("uWorkingRange", range.lo, range.hi);
+    return passPrograms.emplace(key, std::move(p)).first->second;
+  }
+
+  // The first texture unit free for the passes: after the bracket's LUTs.
+  int firstPassUnit() const {
+    return kFirstOcioUnit + fromWorkingLuts.unitCount() + gatherToWorkingLuts.unitCount();
+  }
+
+  void allocatePasses() {
+    passRings.clear();
+    passOutputs.clear();
+    passTargets.clear();
+    freePassLayers.clear();
+    if (passHalf.empty() || width == 0) return;
+    for (bool half : passHalf) {
+      passRings.emplace_back(gl, width, height, capacity(), half ? GL_RGBA16F : GL_RGBA32F);
+      passOutputs.emplace_back(gl, width, height, GL_RGBA32F);
+    }
+    for (int layer = capacity() - 1; layer >= 0; --layer) freePassLayers.push_back(layer);
   }
 
   void allocate(int w, int h) {
@@ -185,6 +240,7 @@ struct WindowResolver::Impl {
     ones.assign(std::size_t(w) * h, 1.0f);
     zeros.assign(std::size_t(w) * h * 2, 0.0f);
     slots.clear();
+    allocatePasses();
   }
 
   // Packs a frame into `layer`: colour into the working space, depth, motion.
@@ -321,6 +377,12 @@ struct WindowResolver::Impl {
                       std::to_string(height) + " (a new size needs a new shot: --reset-frames)",
                   {"", frame, "color"});
     }
+    if (input.passGroups.size() != passHalf.size()) {
+      throw Error("window resolve: frame brings " + std::to_string(input.passGroups.size()) +
+                      " pass groups where the resolve was set up for " +
+                      std::to_string(passHalf.size()),
+                  {"", frame});
+    }
     if (freeLayers.empty()) {
       throw Error("window resolve: the ring of " + std::to_string(capacity()) +
                   " frames is full", {"", frame});
@@ -334,6 +396,14 @@ struct WindowResolver::Impl {
     slot.hasDepth = bool(input.depth);
     slot.hasMotion = bool(input.motion);
     freeLayers.pop_back();
+    if (!passHalf.empty()) {
+      slot.passLayer = freePassLayers.back();
+      freePassLayers.pop_back();
+      for (std::size_t g = 0; g < passRings.size(); ++g) {
+        passRings[g].upload(slot.passLayer, input.passGroups[g], 4, GL_FLOAT);
+      }
+      gl::checkError(gl, "window pass upload");
+    }
     slots.emplace(frame, slot);
     prepare(input, slot.layer);
   }
@@ -342,6 +412,7 @@ struct WindowResolver::Impl {
     const auto found = slots.find(frame);
     if (found == slots.end()) return;
     freeLayers.push_back(found->second.layer);
+    if (found->second.passLayer >= 0) freePassLayers.push_back(found->second.passLayer);
     slots.erase(found);
     // Its neighbours may be classified against it: a frame added later under its number (with
     // other content, as a C ABI host may push) must not find that classification still there.
@@ -362,8 +433,9 @@ struct WindowResolver::Impl {
     p.setArray("uReconstruction", weights.data(), int(weights.size()));
     const bool useCameras = target.camera && options.cameraMotion != CameraMotion::Vectors;
     p.set("uTargetHasCamera", useCameras ? 1 : 0);
+    p.set("uTargetPassLayer", target.passLayer);
 
-    std::vector<int> layers, offsets, hasCamera;
+    std::vector<int> layers, passLayers, offsets, hasCamera;
     std::vector<float> frameWeights, jitters, toTargetAlong, toTargetOffset, toTargetDepthAlong,
         toTargetDepthOffset, fromTargetAlong, fromTargetOffset;
     // Only the rows the gather uses, as 3x3 over (x, y, 1): a carry's offset is always applied
@@ -393,6 +465,7 @@ struct WindowResolver::Impl {
         }
         const Slot& s = found->second;
         layers.push_back(s.layer);
+        passLayers.push_back(s.passLayer);
         offsets.push_back(source - frame);
         frameWeights.push_back(windowFrameWeight(source - frame, options.window));
         jitters.push_back(s.jitter.x);
@@ -416,6 +489,7 @@ struct WindowResolver::Impl {
     p.set("uSourceCount", count);
     if (count == 0) return;
     p.setIntArray("uSourceLayer", layers.data(), count);
+    p.setIntArray("uSourcePassLayer", passLayers.data(), count);
     p.setIntArray("uSourceOffset", offsets.data(), count);
     p.setArray("uSourceWeight", frameWeights.data(), count);
     p.setVec2Array("uSourceJitter", jitters.data(), count);
@@ -440,33 +514,64 @@ struct WindowResolver::Impl {
       }
     }
     classifyWindow(first, last);
-    if (!gatherTarget.id() || gatherHasDebug != debugOutput) {
+    const int groups = int(passHalf.size());
+    const int draws = groups == 0 ? 1 : (groups + kPassGroupsPerDraw - 1) / kPassGroupsPerDraw;
+    if (!gatherTarget.id() || gatherHasDebug != debugOutput || int(passTargets.size()) != draws) {
       debug = debugOutput ? gl::Texture(gl, width, height, GL_RGBA32F) : gl::Texture();
       gatherTarget = gl::Framebuffer(
           gl, std::vector<gl::Attachment>{&output, debugOutput ? &debug : nullptr});
       gatherHasDebug = debugOutput;
+      passTargets.clear();
+      for (int d = 0; d < draws && groups > 0; ++d) {
+        std::vector<gl::Attachment> attachments{&output, debugOutput ? &debug : nullptr};
+        for (int g = d * kPassGroupsPerDraw; g < std::min(groups, (d + 1) * kPassGroupsPerDraw);
+             ++g) {
+          attachments.emplace_back(&passOutputs[std::size_t(g)]);
+        }
+        passTargets.emplace_back(gl, attachments);
+      }
     }
     bool chains = false;
     for (int f : FrameSpan(first, last)) chains = chains || slots.at(f).hasMoving;
-    const gl::Program& p = gatherPrograms[chains ? 1 : 0];
-    p.set("uSigma", options.window.sigma);
-    p.set("uColourTolerance", options.window.colourTolerance);
-    p.set("uDepthTolerance", options.depthTolerance);
-    p.set("uReconstructionWeight", options.window.reconstructionWeight);
-    p.set("uOpaqueMoving", options.window.opaqueMoving ? 1 : 0);
-    p.set("uAdaptive", options.window.adaptive ? 1 : 0);
-    // The output clamped to what its type holds (glsl/finite_range.glsl).
-    p.set("uOutputLimit", outputType == SampleType::Half ? 65504.0f
-                                                         : std::numeric_limits<float>::max());
-    setGatherUniforms(p, frame, first, last);
-    gatherTarget.bind();
-    p.use();
-    ring.bind(kRingUnit);
-    ringMotion.bind(kRingMotionUnit);
-    fromWorkingLuts.bind();
-    gatherToWorkingLuts.bind();
-    triangle.draw();
-    gl::checkError(gl, "window gather pass");
+    // With passes, each draw sums its groups with the weights the beauty's samples get (the
+    // same program text and uniforms but for the groups: the same weights, bit for bit); each
+    // writes the colour too, the same every time.
+    for (int d = 0; d < draws; ++d) {
+      const int firstGroup = d * kPassGroupsPerDraw;
+      const int drawGroups = std::min(groups - firstGroup, kPassGroupsPerDraw);
+      const gl::Program& p = gatherProgram(chains ? 1 : 0, std::max(drawGroups, 0));
+      p.set("uSigma", options.window.sigma);
+      p.set("uColourTolerance", options.window.colourTolerance);
+      p.set("uDepthTolerance", options.depthTolerance);
+      p.set("uReconstructionWeight", options.window.reconstructionWeight);
+      p.set("uOpaqueMoving", options.window.opaqueMoving ? 1 : 0);
+      p.set("uAdaptive", options.window.adaptive ? 1 : 0);
+      // The output clamped to what its type holds (glsl/finite_range.glsl).
+      p.set("uOutputLimit", outputType == SampleType::Half ? 65504.0f
+                                                           : std::numeric_limits<float>::max());
+      setGatherUniforms(p, frame, first, last);
+      std::vector<int> passUnits;
+      for (int g = 0; g < drawGroups; ++g) passUnits.push_back(firstPassUnit() + g);
+      if (drawGroups > 0) p.setIntArray("uPasses", passUnits.data(), drawGroups);
+      (groups > 0 ? passTargets[std::size_t(d)] : gatherTarget).bind();
+      p.use();
+      ring.bind(kRingUnit);
+      ringMotion.bind(kRingMotionUnit);
+      fromWorkingLuts.bind();
+      gatherToWorkingLuts.bind();
+      for (int g = 0; g < drawGroups; ++g) {
+        passRings[std::size_t(firstGroup + g)].bind(passUnits[std::size_t(g)]);
+      }
+      triangle.draw();
+      gl::checkError(gl, "window gather pass");
+    }
+    lastPasses.assign(std::size_t(groups), Image());
+    for (int g = 0; g < groups; ++g) {
+      Image sums(width, height, 4);
+      passTargets[std::size_t(g / kPassGroupsPerDraw)].readRGBA(sums.pixels.data(), GL_FLOAT,
+                                                                 2 + g % kPassGroupsPerDraw);
+      lastPasses[std::size_t(g)] = std::move(sums);
+    }
 
     if (debugOutput) {
       const std::vector<float> rgba = gatherTarget.readRGBA(1);
@@ -511,6 +616,14 @@ TypedImage WindowResolver::resolve(int frame, int first, int last, SampleType ou
 }
 
 void WindowResolver::setDebugOutput(bool enabled) { impl_->debugOutput = enabled; }
+
+void WindowResolver::setPassGroups(const std::vector<bool>& halfGroups) {
+  if (!impl_->slots.empty()) throw Error("window resolve: pass groups set with frames in the ring");
+  impl_->passHalf = halfGroups;
+  impl_->allocatePasses();
+}
+
+const std::vector<Image>& WindowResolver::lastPasses() const { return impl_->lastPasses; }
 
 const Image& WindowResolver::lastDebug() const { return impl_->lastDebug; }
 

@@ -48,6 +48,13 @@ class WindowResolver {
   // the window (each frame against the one before it there, the first against the one after).
   TypedImage resolve(int frame, int first, int last, SampleType outputType);
 
+  // Pass values summed with the beauty's weights (resolve/pass_plan): `halfGroups[g]` says
+  // whether group g's ring may hold halves (every channel in it was half). Call before the
+  // first frame or after clear(); every addFrame then brings that many groups.
+  void setPassGroups(const std::vector<bool>& halfGroups);
+  // The last resolved frame's pass sums, RGBA per group.
+  const std::vector<Image>& lastPasses() const;
+
   // Keep each frame's diagnostics for lastDebug() (one more read-back per frame).
   void setDebugOutput(bool enabled);
   // kWindowDebugChannels channels of the last resolved frame.

@@ -1,0 +1,163 @@
+#include "resolve/pass_plan.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "taa/error.h"
+
+namespace taa {
+namespace {
+
+using io::ChannelKind;
+
+bool summed(ChannelKind kind) {
+  return kind == ChannelKind::Light || kind == ChannelKind::Factor ||
+         kind == ChannelKind::Average || kind == ChannelKind::Normal;
+}
+
+// The component after the last dot: "X" of "ViewLayer.Normal.X".
+std::string componentOf(const std::string& name) { return name.substr(name.rfind('.') + 1); }
+std::string stemOf(const std::string& name) {
+  const std::size_t dot = name.rfind('.');
+  return dot == std::string::npos ? "" : name.substr(0, dot);
+}
+
+}  // namespace
+
+PassPlan planPasses(const std::vector<std::string>& names,
+                    const std::vector<OIIO::TypeDesc>& formats,
+                    const std::vector<io::ChannelKindRule>& rules) {
+  PassPlan plan;
+  plan.names = names;
+  plan.formats = formats;
+  std::map<std::string, int> index;
+  for (int c = 0; c < int(names.size()); ++c) index[names[std::size_t(c)]] = c;
+  for (const std::string& name : names) plan.kinds.push_back(io::channelKind(name, rules));
+  plan.value.assign(names.size(), -1);
+  plan.factor.assign(names.size(), -1);
+  for (int c = 0; c < int(names.size()); ++c) {
+    const ChannelKind kind = plan.kinds[std::size_t(c)];
+    if (!summed(kind)) continue;
+    if (kind == ChannelKind::Light) {
+      const auto found = index.find(io::factorChannelOf(names[std::size_t(c)]));
+      if (found != index.end() && plan.kinds[std::size_t(found->second)] == ChannelKind::Factor) {
+        plan.factor[std::size_t(c)] = found->second;
+      }
+    }
+    plan.value[std::size_t(c)] = int(plan.valueChannel.size());
+    plan.valueChannel.push_back(c);
+    plan.valueFactor.push_back(plan.factor[std::size_t(c)]);
+  }
+  plan.kept.assign(names.size(), -1);
+  for (std::size_t c = 0; c < names.size(); ++c) {
+    if (plan.value[c] < 0) plan.kept[c] = plan.keptCount++;
+  }
+  for (int g = 0; g < plan.groups(); ++g) {
+    bool half = true;
+    for (std::size_t v = std::size_t(4 * g); v < std::min(plan.valueChannel.size(), std::size_t(4 * g + 4)); ++v) {
+      // A product of two halves rounded to half again loses 2^-11 of itself, far below what
+      // the comp sees, and halves the ring's memory.
+      const int factor = plan.valueFactor[v];
+      half = half && formats[std::size_t(plan.valueChannel[v])] == OIIO::TypeHalf &&
+             (factor < 0 || formats[std::size_t(factor)] == OIIO::TypeHalf);
+    }
+    plan.halfGroups.push_back(half);
+  }
+  // Normals: X, Y, Z of one stem, renormalised together.
+  for (int c = 0; c < int(names.size()); ++c) {
+    if (plan.kinds[std::size_t(c)] != ChannelKind::Normal) continue;
+    const std::string& name = names[std::size_t(c)];
+    const std::string component = componentOf(name), stem = stemOf(name);
+    if (component != "X" && component != "R" && component != "x") continue;
+    const std::string y = component == "X" ? "Y" : component == "R" ? "G" : "y";
+    const std::string z = component == "X" ? "Z" : component == "R" ? "B" : "z";
+    const std::string prefix = stem.empty() ? "" : stem + ".";
+    const auto fy = index.find(prefix + y), fz = index.find(prefix + z);
+    if (fy == index.end() || fz == index.end() || fy->second != c + 1 || fz->second != c + 2 ||
+        plan.kinds[std::size_t(c + 1)] != ChannelKind::Normal ||
+        plan.kinds[std::size_t(c + 2)] != ChannelKind::Normal) {
+      continue;
+    }
+    plan.normalX.push_back(c);
+  }
+  return plan;
+}
+
+std::vector<std::vector<float>> packPassGroups(const Image& passes, const PassPlan& plan) {
+  if (passes.channels != int(plan.names.size())) {
+    throw Error("the frame has " + std::to_string(passes.channels) +
+                " pass channels where the first frame had " + std::to_string(plan.names.size()));
+  }
+  const std::size_t pixels = std::size_t(passes.width) * std::size_t(passes.height);
+  const std::size_t stride = std::size_t(passes.channels);
+  std::vector<std::vector<float>> groups(std::size_t(plan.groups()),
+                                         std::vector<float>(pixels * 4, 0.0f));
+  for (std::size_t v = 0; v < plan.valueChannel.size(); ++v) {
+    std::vector<float>& group = groups[v / 4];
+    const std::size_t slot = v % 4;
+    const std::size_t channel = std::size_t(plan.valueChannel[v]);
+    const int factor = plan.valueFactor[v];
+    const float* in = passes.pixels.data();
+    if (factor < 0) {
+      for (std::size_t i = 0; i < pixels; ++i) group[4 * i + slot] = in[i * stride + channel];
+    } else {
+      for (std::size_t i = 0; i < pixels; ++i) {
+        group[4 * i + slot] = in[i * stride + channel] * in[i * stride + std::size_t(factor)];
+      }
+    }
+  }
+  return groups;
+}
+
+Image keptChannels(const Image& passes, const PassPlan& plan) {
+  Image kept(passes.width, passes.height, plan.keptCount);
+  const std::size_t pixels = std::size_t(passes.width) * std::size_t(passes.height);
+  for (std::size_t c = 0; c < plan.kept.size(); ++c) {
+    const int k = plan.kept[c];
+    if (k < 0) continue;
+    for (std::size_t i = 0; i < pixels; ++i) {
+      kept.pixels[i * std::size_t(plan.keptCount) + std::size_t(k)] =
+          passes.pixels[i * std::size_t(passes.channels) + c];
+    }
+  }
+  return kept;
+}
+
+Image finishPasses(const std::vector<Image>& sums, const Image& kept, const PassPlan& plan) {
+  const int width = sums.empty() ? kept.width : sums.front().width;
+  const int height = sums.empty() ? kept.height : sums.front().height;
+  Image out(width, height, int(plan.names.size()));
+  const std::size_t pixels = std::size_t(width) * std::size_t(height);
+  const std::size_t stride = plan.names.size();
+  auto sumAt = [&](int value, std::size_t i) {
+    return sums[std::size_t(value / 4)].pixels[4 * i + std::size_t(value % 4)];
+  };
+  for (std::size_t c = 0; c < stride; ++c) {
+    const int value = plan.value[c];
+    const int factor = plan.factor[c];
+    for (std::size_t i = 0; i < pixels; ++i) {
+      float v = value < 0 ? kept.pixels[i * std::size_t(plan.keptCount) + std::size_t(plan.kept[c])]
+                          : sumAt(value, i);
+      if (factor >= 0) {
+        // Light = (light x factor) / factor, as the renderer divides its sums; where no
+        // sample had any factor (black albedo) the light is 0, as Cycles writes it.
+        const float f = sumAt(plan.value[std::size_t(factor)], i);
+        v = f != 0.0f ? v / f : 0.0f;
+      }
+      out.pixels[i * stride + c] = v;
+    }
+  }
+  for (int x : plan.normalX) {
+    for (std::size_t i = 0; i < pixels; ++i) {
+      float* n = &out.pixels[i * stride + std::size_t(x)];
+      const float length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+      if (length > 0.0f) {
+        for (int k = 0; k < 3; ++k) n[k] /= length;
+      }
+    }
+  }
+  return out;
+}
+
+}  // namespace taa

@@ -1,0 +1,59 @@
+// How the channels beside the beauty are resolved (issue 21). The window's gather sums four
+// values a texel with the beauty's weights (glsl/window_gather.frag, PASS_GROUPS); this plan
+// says which values those are and how the channels come back from the sums:
+// - light with a factor (Cycles' DiffDir with DiffCol): the product is summed, as the renderer
+//   accumulates light, and divided by the summed factor at the end, so Dir x Col of the result
+//   is the resolved light and Combined = sum of (Dir + Ind) x Col + Emit + Env still holds;
+// - light, factor, average: summed; normal: summed, then the vector renormalised;
+// - nearest, Cryptomatte (for now), copy: frame t's own value, never a blend.
+#pragma once
+
+#include <OpenImageIO/typedesc.h>
+
+#include <string>
+#include <vector>
+
+#include "io/channel_kinds.h"
+#include "util/image.h"
+
+namespace taa {
+
+struct PassPlan {
+  std::vector<std::string> names;            // the channels, as read
+  std::vector<OIIO::TypeDesc> formats;       // and their types in the file
+  std::vector<io::ChannelKind> kinds;        // per channel
+  // Per channel: the index of the value summed for it (group * 4 + slot), or -1 (t's own).
+  std::vector<int> value;
+  // Per channel: the channel its value is multiplied by before the sum (its factor), or -1.
+  std::vector<int> factor;
+  // What each summed value is: the channel, and the factor channel or -1.
+  std::vector<int> valueChannel, valueFactor;
+  std::vector<int> normalX;  // first channel of each normal triple (renormalised)
+  // Per channel: its index among the channels taken from frame t as they are (not summed), or
+  // -1; and how many those are.
+  std::vector<int> kept;
+  int keptCount = 0;
+  // Per group: whether its ring may hold halves (every value from half channels).
+  std::vector<bool> halfGroups;
+
+  int groups() const { return int((valueChannel.size() + 3) / 4); }
+  bool empty() const { return names.empty(); }
+};
+
+// The plan for a frame's pass channels (names and types as read, in file order) under `rules`.
+PassPlan planPasses(const std::vector<std::string>& names,
+                    const std::vector<OIIO::TypeDesc>& formats,
+                    const std::vector<io::ChannelKindRule>& rules);
+
+// Group g's values of every pixel, RGBA interleaved (unused slots 0): what the ring holds.
+std::vector<std::vector<float>> packPassGroups(const Image& passes, const PassPlan& plan);
+
+// Frame t's channels that are not summed (PassPlan::kept), from its pass channels as read: what
+// the output takes from t itself, kept while the frame waits for its turn.
+Image keptChannels(const Image& passes, const PassPlan& plan);
+
+// The resolved channels from the gather's sums (one RGBA image per group) and frame t's kept
+// channels (keptChannels): an image with `plan.names`' channels in their order.
+Image finishPasses(const std::vector<Image>& sums, const Image& kept, const PassPlan& plan);
+
+}  // namespace taa

@@ -1,0 +1,214 @@
+// End-to-end: every pass of the colour file resolved beside the beauty (issue 21). The scene
+// generator's moving object gets light, factor, normal and index passes built per sample so
+// that the comp's identity Combined = DiffDir x DiffCol + GlossDir x GlossCol + Emit holds in
+// the input; taatool must keep it in the output, keep data passes unblended, and keep names and
+// types.
+#include <gtest/gtest.h>
+
+#include <OpenImageIO/imageio.h>
+
+#include <cmath>
+#include <filesystem>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "taatool_runner.h"
+
+namespace taa {
+namespace {
+
+namespace fs = std::filesystem;
+
+using test::ToolRun;
+
+constexpr int kWidth = 64, kHeight = 40, kFrames = 6;
+
+struct Exr {
+  OIIO::ImageSpec spec;
+  std::vector<float> pixels;
+  float at(std::size_t pixel, const std::string& channel) const {
+    return pixels[pixel * std::size_t(spec.nchannels) + std::size_t(spec.channelindex(channel))];
+  }
+};
+
+Exr readExr(const fs::path& path) {
+  Exr exr;
+  auto in = OIIO::ImageInput::open(path.string());
+  EXPECT_TRUE(in) << path;
+  if (!in) return exr;
+  exr.spec = in->spec();
+  exr.pixels.resize(exr.spec.image_pixels() * std::size_t(exr.spec.nchannels));
+  EXPECT_TRUE(in->read_image(0, 0, 0, exr.spec.nchannels, OIIO::TypeFloat, exr.pixels.data()));
+  return exr;
+}
+
+std::string frameName(const std::string& stem, int frame) {
+  char name[64];
+  std::snprintf(name, sizeof name, "%s.%04d.exr", stem.c_str(), frame);
+  return name;
+}
+
+const std::vector<std::string> kLightPasses = {"DiffDir", "GlossDir", "Emit"};
+const std::vector<std::string> kRgb = {"R", "G", "B"};
+
+// The relative L1 mismatch of the comp identity over the image, in percent.
+double identityMismatch(const Exr& beauty, const Exr& passes) {
+  double error = 0.0, total = 0.0;
+  for (std::size_t p = 0; p < beauty.spec.image_pixels(); ++p) {
+    for (const std::string& c : kRgb) {
+      const double rebuilt = double(passes.at(p, "DiffDir." + c)) * passes.at(p, "DiffCol." + c) +
+                             double(passes.at(p, "GlossDir." + c)) * passes.at(p, "GlossCol." + c) +
+                             passes.at(p, "Emit." + c);
+      error += std::abs(double(beauty.at(p, c)) - rebuilt);
+      total += std::abs(double(beauty.at(p, c)));
+    }
+  }
+  return 100.0 * error / total;
+}
+
+class PassesTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = test::freshTestFolder();
+    in_ = dir_ / "in";
+    test::writeSeparateFrames(in_, 1, kFrames, kWidth, kHeight);
+    for (int f = 1; f <= kFrames; ++f) addPasses(in_ / frameName("beauty", f));
+  }
+
+  // Rewrites a beauty file with passes made from its own samples, per sample exact: a diffuse
+  // colour that varies with the sample, light split 60/30/10 between diffuse, gloss and
+  // emission, a normal, an object index; half colour, float data, as Cycles writes them.
+  static void addPasses(const fs::path& path) {
+    const Exr in = readExr(path);
+    OIIO::ImageSpec spec(kWidth, kHeight, 0, OIIO::TypeHalf);
+    std::vector<std::string> names = {"R", "G", "B", "A"};
+    for (const std::string pass : {"DiffDir", "DiffCol", "GlossDir", "GlossCol", "Emit"}) {
+      for (const std::string& c : kRgb) names.push_back(pass + "." + c);
+    }
+    for (const char* c : {"Normal.X", "Normal.Y", "Normal.Z", "IndexOB.X"}) names.push_back(c);
+    spec.nchannels = int(names.size());
+    spec.channelnames = names;
+    spec.alpha_channel = 3;
+    for (const std::string& name : names) {
+      const bool data = name.rfind("Normal", 0) == 0 || name.rfind("IndexOB", 0) == 0;
+      spec.channelformats.push_back(data ? OIIO::TypeFloat : OIIO::TypeHalf);
+    }
+    std::vector<float> pixels;
+    for (std::size_t p = 0; p < in.spec.image_pixels(); ++p) {
+      const float r = in.at(p, "R"), g = in.at(p, "G"), b = in.at(p, "B");
+      const float rgb[3] = {r, g, b};
+      const float diffuseColour = 0.25f + 0.5f * (0.5f + 0.5f * std::sin(13.0f * (r + 2.0f * g)));
+      for (int c = 0; c < 4; ++c) pixels.push_back(c < 3 ? rgb[c] : in.at(p, "A"));
+      for (int c = 0; c < 3; ++c) pixels.push_back(0.6f * rgb[c] / diffuseColour);
+      for (int c = 0; c < 3; ++c) pixels.push_back(diffuseColour);
+      for (int c = 0; c < 3; ++c) pixels.push_back(0.3f * rgb[c] / 0.5f);
+      for (int c = 0; c < 3; ++c) pixels.push_back(0.5f);
+      for (int c = 0; c < 3; ++c) pixels.push_back(0.1f * rgb[c]);
+      // A normal that turns with the colour: averaging shortens it.
+      const float angle = 6.0f * (r - b);
+      pixels.push_back(std::cos(angle));
+      pixels.push_back(std::sin(angle));
+      pixels.push_back(0.0f);
+      pixels.push_back(r > g ? 2.0f : 1.0f);
+    }
+    auto out = OIIO::ImageOutput::create(path.string());
+    ASSERT_TRUE(out && out->open(path.string(), spec));
+    ASSERT_TRUE(out->write_image(OIIO::TypeFloat, pixels.data()));
+    ASSERT_TRUE(out->close());
+  }
+
+  ToolRun run(std::vector<std::string> extra, const std::string& out = "out") const {
+    std::vector<std::string> args =
+        test::separateFileArgs(in_, dir_ / out / "r.####.exr");
+    args.insert(args.end(), extra.begin(), extra.end());
+    return test::runTaatool(args, dir_);
+  }
+
+  fs::path dir_, in_;
+};
+
+TEST_F(PassesTest, EveryPassIsResolvedAndTheCompIdentityHolds) {
+  const ToolRun r = run({"-v"});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.err.find("DiffDir.R light"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("IndexOB.X nearest"), std::string::npos) << r.err;
+  const int f = 3;
+  const Exr in = readExr(in_ / frameName("beauty", f));
+  const Exr out = readExr(dir_ / "out" / frameName("r", f));
+  // A drop-in replacement: every channel under its name, in its type.
+  std::multiset<std::string> inNames(in.spec.channelnames.begin(), in.spec.channelnames.end());
+  std::multiset<std::string> outNames(out.spec.channelnames.begin(), out.spec.channelnames.end());
+  EXPECT_EQ(outNames, inNames);
+  for (const char* name : {"DiffDir.R", "Normal.X", "IndexOB.X"}) {
+    EXPECT_EQ(out.spec.channelformat(out.spec.channelindex(name)),
+              in.spec.channelformat(in.spec.channelindex(name)))
+        << name;
+  }
+
+  // The identity holds in the input (to half's rounding), and in the output as well; the raw
+  // passes beside the resolved beauty (what --passthrough gives) break it.
+  const double input = identityMismatch(in, in);
+  const double output = identityMismatch(out, out);
+  const double passthrough = identityMismatch(out, in);
+  EXPECT_LT(input, 0.1);
+  EXPECT_LT(output, 0.5) << "input " << input << "%, passthrough " << passthrough << "%";
+  EXPECT_GT(passthrough, 4.0 * output) << "output " << output << "%";
+  std::printf("comp identity mismatch: input %.4f%%, output %.4f%%, raw passes %.4f%%\n", input,
+              output, passthrough);
+
+  // The passes were resolved, not copied: the diffuse colour differs from the raw samples.
+  std::size_t changed = 0;
+  for (std::size_t p = 0; p < in.spec.image_pixels(); ++p) {
+    changed += std::abs(out.at(p, "DiffCol.R") - in.at(p, "DiffCol.R")) > 1e-3f;
+  }
+  EXPECT_GT(changed, in.spec.image_pixels() / 50);
+
+  // Normals averaged, then unit length again; the index is the frame's own sample, never a
+  // blend of two objects' indices.
+  for (std::size_t p = 0; p < out.spec.image_pixels(); ++p) {
+    const float x = out.at(p, "Normal.X"), y = out.at(p, "Normal.Y"), z = out.at(p, "Normal.Z");
+    ASSERT_NEAR(std::sqrt(x * x + y * y + z * z), 1.0f, 1e-4f) << "pixel " << p;
+    ASSERT_EQ(out.at(p, "IndexOB.X"), in.at(p, "IndexOB.X")) << "pixel " << p;
+  }
+}
+
+TEST_F(PassesTest, AovRulesChooseKindsAndDropChannels) {
+  // Everything but the colour dropped: the colour alone, as before passes were resolved.
+  ToolRun r = run({"--aov", "*=drop"}, "dropped");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  Exr out = readExr(dir_ / "dropped" / frameName("r", 3));
+  EXPECT_EQ(out.spec.channelnames, (std::vector<std::string>{"R", "G", "B", "A"}));
+
+  // A rule wins over the pass name: the diffuse colour copied untouched, the rest dropped.
+  r = run({"--aov", "DiffCol.*=copy", "--aov", "*=drop"}, "copied");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  out = readExr(dir_ / "copied" / frameName("r", 3));
+  const Exr in = readExr(in_ / frameName("beauty", 3));
+  EXPECT_EQ(out.spec.nchannels, 7);
+  for (std::size_t p = 0; p < in.spec.image_pixels(); ++p) {
+    ASSERT_EQ(out.at(p, "DiffCol.G"), in.at(p, "DiffCol.G")) << "pixel " << p;
+  }
+
+  // --passthrough keeps its meaning: untouched.
+  r = run({"--passthrough", "Emit.*"}, "passthrough");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  out = readExr(dir_ / "passthrough" / frameName("r", 3));
+  for (std::size_t p = 0; p < in.spec.image_pixels(); ++p) {
+    ASSERT_EQ(out.at(p, "Emit.B"), in.at(p, "Emit.B")) << "pixel " << p;
+  }
+}
+
+TEST_F(PassesTest, BadRulesAndTheHistoryModeAreRefusedWithAMessage) {
+  test::expectToolError(run({"--aov", "DiffCol.*=albedo"}),
+                        {"--aov 'DiffCol.*=albedo': unknown kind 'albedo'", "light, factor"});
+  test::expectToolError(run({"--aov", "DiffCol.*"}), {"--aov wants PATTERN=kind"});
+  test::expectToolError(run({"--mode", "history", "--aov", "*=light"}), {"--mode window"});
+  // The history mode without --aov writes the colour alone, as it always did.
+  const ToolRun r = run({"--mode", "history"}, "history");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(readExr(dir_ / "history" / frameName("r", 3)).spec.nchannels, 4);
+}
+
+}  // namespace
+}  // namespace taa

@@ -1,0 +1,86 @@
+// Channel kinds by pass name and rule, and the plan that resolves them (issue 21).
+#include "resolve/pass_plan.h"
+
+#include <gtest/gtest.h>
+
+#include "io/channel_kinds.h"
+#include "taa/error.h"
+
+namespace taa {
+namespace {
+
+using io::ChannelKind;
+using io::channelKind;
+
+TEST(ChannelKinds, CyclesPassNamesHaveTheirKinds) {
+  EXPECT_EQ(channelKind("ViewLayer.Combined.R", {}), ChannelKind::Light);
+  EXPECT_EQ(channelKind("ViewLayer.DiffDir.G", {}), ChannelKind::Light);
+  EXPECT_EQ(channelKind("ViewLayer.Shadow.B", {}), ChannelKind::Light);
+  EXPECT_EQ(channelKind("ViewLayer.GlossCol.B", {}), ChannelKind::Factor);
+  EXPECT_EQ(channelKind("ViewLayer.Normal.X", {}), ChannelKind::Normal);
+  EXPECT_EQ(channelKind("ViewLayer.UV.U", {}), ChannelKind::Average);
+  EXPECT_EQ(channelKind("ViewLayer.Position.Z", {}), ChannelKind::Average);
+  EXPECT_EQ(channelKind("ViewLayer.Depth.Z", {}), ChannelKind::Nearest);
+  EXPECT_EQ(channelKind("ViewLayer.IndexOB.X", {}), ChannelKind::Nearest);
+  EXPECT_EQ(channelKind("ViewLayer.Vector.W", {}), ChannelKind::Nearest);
+  EXPECT_EQ(channelKind("ViewLayer.CryptoObject01.r", {}), ChannelKind::Cryptomatte);
+  // Unknown passes: colour components are light, anything else data.
+  EXPECT_EQ(channelKind("ViewLayer.my_light_group.R", {}), ChannelKind::Light);
+  EXPECT_EQ(channelKind("ViewLayer.my_data.X", {}), ChannelKind::Nearest);
+  EXPECT_EQ(channelKind("Z", {}), ChannelKind::Nearest);
+}
+
+TEST(ChannelKinds, TheFirstMatchingRuleWins) {
+  const std::vector<io::ChannelKindRule> rules = {io::parseChannelKindRule("*.Normal.*=average"),
+                                                  io::parseChannelKindRule("*=drop")};
+  EXPECT_EQ(channelKind("ViewLayer.Normal.X", rules), ChannelKind::Average);
+  EXPECT_EQ(channelKind("ViewLayer.DiffDir.R", rules), ChannelKind::Drop);
+  EXPECT_EQ(io::parseChannelKindRule("a=b=light").pattern, "a=b");
+  EXPECT_THROW(io::parseChannelKindRule("=light"), Error);
+  EXPECT_THROW(io::parseChannelKindRule("x=bright"), Error);
+}
+
+TEST(ChannelKinds, LightPassesFindTheirFactor) {
+  EXPECT_EQ(io::factorChannelOf("ViewLayer.DiffDir.R"), "ViewLayer.DiffCol.R");
+  EXPECT_EQ(io::factorChannelOf("ViewLayer.GlossInd.B"), "ViewLayer.GlossCol.B");
+  EXPECT_EQ(io::factorChannelOf("diffuse_direct.G"), "diffuse_albedo.G");
+  EXPECT_EQ(io::factorChannelOf("ViewLayer.VolumeDir.R"), "");
+  EXPECT_EQ(io::factorChannelOf("ViewLayer.Emit.R"), "");
+}
+
+// One pixel: light x factor summed and divided by the summed factor gives a light whose product
+// with the resolved factor is the resolved light; normals come back unit length; nearest
+// channels are t's own.
+TEST(PassPlan, ProductsAreSummedAndDividedAndNormalsRenormalised) {
+  const std::vector<std::string> names = {"L.DiffDir.R", "L.DiffCol.R", "L.Normal.X", "L.Normal.Y",
+                                          "L.Normal.Z", "L.IndexOB.X"};
+  const std::vector<OIIO::TypeDesc> formats(names.size(), OIIO::TypeHalf);
+  const PassPlan plan = planPasses(names, formats, {});
+  ASSERT_EQ(plan.groups(), 2);  // DiffDir x DiffCol, DiffCol, Normal X Y Z
+  EXPECT_EQ(plan.factor[0], 1);
+  EXPECT_TRUE(plan.halfGroups[0]);  // half channels: half rings, products too
+  EXPECT_TRUE(plan.halfGroups[1]);
+  EXPECT_FALSE(planPasses(names, std::vector<OIIO::TypeDesc>(names.size(), OIIO::TypeFloat), {})
+                   .halfGroups[0]);
+  EXPECT_EQ(plan.keptCount, 1);
+
+  // Two samples, equal weights: light 0.2 x colour 0.5 and 0.6 x colour 1.0.
+  Image a(1, 1, 6), b(1, 1, 6);
+  a.pixels = {0.2f, 0.5f, 1.0f, 0.0f, 0.0f, 3.0f};
+  b.pixels = {0.6f, 1.0f, 0.0f, 1.0f, 0.0f, 4.0f};
+  const auto ga = packPassGroups(a, plan), gb = packPassGroups(b, plan);
+  std::vector<Image> sums(2, Image(1, 1, 4));
+  for (int g = 0; g < 2; ++g) {
+    for (int c = 0; c < 4; ++c) sums[g].pixels[c] = 0.5f * (ga[g][c] + gb[g][c]);
+  }
+  const Image out = finishPasses(sums, keptChannels(a, plan), plan);
+  const float light = 0.5f * (0.2f * 0.5f + 0.6f * 1.0f);
+  EXPECT_FLOAT_EQ(out.pixels[1], 0.75f);
+  EXPECT_FLOAT_EQ(out.pixels[0] * out.pixels[1], light);
+  EXPECT_FLOAT_EQ(out.pixels[2], std::sqrt(0.5f));
+  EXPECT_FLOAT_EQ(out.pixels[3], std::sqrt(0.5f));
+  EXPECT_EQ(out.pixels[5], 3.0f);
+}
+
+}  // namespace
+}  // namespace taa
