@@ -2,22 +2,24 @@
 # The cost of resolving every pass (issue 21): the benchmark's 1080p Cycles render
 # (scripts/benchmark.sh's cache) with every pass a Cycles render can write added to each frame
 # (light, colour and data passes as copies of the beauty's and depth's values: the values do
-# not change the cost, the channel count and types do; 70 channels as Blender 3.4.1 writes them
-# with every pass on), resolved with the passes and with the colour alone (--aov '*=drop').
+# not change the cost, the channel count and types do; 71 channels, typed as Blender 3.4.1 writes
+# them with every pass on: light and colour half, data float), resolved with the passes and with the colour alone (--aov '*=drop').
 # Prints seconds, frames/s and peak RSS of each. Needs oiiotool and GNU time.
 #   FRAMES   frames resolved (default 1-12)
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 taatool="${TAATOOL:-$root/build/bin/taatool}"
 source_dir="${BENCH_SOURCE:-$HOME/.cache/taa/bench/cycles_fence-1920x1080-1-24}"
-work="${BENCH_PASSES_DIR:-$HOME/.cache/taa/bench/cycles_fence-1920x1080-passes}"
+work="${BENCH_PASSES_DIR:-$HOME/.cache/taa/bench/cycles_fence-1920x1080-passes-typed}"
 frames="${FRAMES:-1-12}"
 [ -f "$source_dir/input.0001.exr" ] || { echo "no render in $source_dir: run PARTS=blender scripts/benchmark.sh first" >&2; exit 1; }
 mkdir -p "$work"
 L=ViewLayer
 channels="$L.Combined.R,$L.Combined.G,$L.Combined.B,$L.Combined.A,$L.Depth.Z,$L.Vector.X,$L.Vector.Y,$L.Vector.Z,$L.Vector.W"
+halves=()  # Blender writes light and colour passes as half ("half colour"), data as float
+for c in R G B A; do halves+=(-d "$L.Combined.$c=half"); done
 for pass in DiffDir DiffInd DiffCol GlossDir GlossInd GlossCol TransDir TransInd TransCol Emit Env AO Shadow; do
-  for c in R G B; do channels+=",$L.$pass.$c=$L.Combined.$c"; done
+  for c in R G B; do channels+=",$L.$pass.$c=$L.Combined.$c"; halves+=(-d "$L.$pass.$c=half"); done
 done
 for c in X Y Z; do channels+=",$L.Normal.$c=$L.Combined.R,$L.Position.$c=$L.Depth.Z"; done
 channels+=",$L.UV.U=$L.Combined.R,$L.UV.V=$L.Combined.G,$L.UV.A=$L.Combined.A"
@@ -27,7 +29,7 @@ for rank in 00 01 02; do
 done
 for input in "$source_dir"/input.*.exr; do
   out="$work/$(basename "$input")"
-  [ -f "$out" ] || oiiotool "$input" --ch "$channels" -o "$out"
+  [ -f "$out" ] || oiiotool "$input" --ch "$channels" -d float "${halves[@]}" -o "$out"
 done
 cp -f "$source_dir/camera.json" "$work/" 2>/dev/null || true
 echo "input: $(oiiotool --info "$work/input.0001.exr" | head -1)"

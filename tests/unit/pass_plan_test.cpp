@@ -68,7 +68,9 @@ TEST(PassPlan, ProductsAreSummedAndDividedAndNormalsRenormalised) {
   Image a(1, 1, 6), b(1, 1, 6);
   a.pixels = {0.2f, 0.5f, 1.0f, 0.0f, 0.0f, 3.0f};
   b.pixels = {0.6f, 1.0f, 0.0f, 1.0f, 0.0f, 4.0f};
-  const auto ga = packPassGroups(a, plan), gb = packPassGroups(b, plan);
+  std::vector<std::vector<float>> ga, gb;
+  packPassGroups(a, plan, ga);
+  packPassGroups(b, plan, gb);
   std::vector<Image> sums(2, Image(1, 1, 4));
   for (int g = 0; g < 2; ++g) {
     for (int c = 0; c < 4; ++c) sums[g].pixels[c] = 0.5f * (ga[g][c] + gb[g][c]);

@@ -226,10 +226,10 @@ PixelType parsePixelType(const std::string& text) {
   throw Error("unknown pixel type \"" + text + "\" (expected half, float or input)");
 }
 
-void appendExtraChannels(ExtraChannels& extra, const ExtraChannels& more) {
+void appendExtraChannels(ExtraChannels& extra, ExtraChannels more) {
   if (more.names.empty()) return;
   if (extra.names.empty()) {
-    extra = more;
+    extra = std::move(more);
     return;
   }
   const int channels = extra.image.channels + more.image.channels;

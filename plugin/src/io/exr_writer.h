@@ -39,8 +39,9 @@ struct ExtraChannels {
                                         // color's pixel type
 };
 
-// Appends `more`'s channels after `extra`'s (same image size, or `extra` empty).
-void appendExtraChannels(ExtraChannels& extra, const ExtraChannels& more);
+// Appends `more`'s channels after `extra`'s (same image size, or `extra` empty: then `more` is
+// moved in, not copied, which matters for a render's every pass).
+void appendExtraChannels(ExtraChannels& extra, ExtraChannels more);
 
 // "half" | "float" | "input"; otherwise throws taa::Error.
 PixelType parsePixelType(const std::string& text);

@@ -84,42 +84,43 @@ PassPlan planPasses(const std::vector<std::string>& names,
   return plan;
 }
 
-std::vector<std::vector<float>> packPassGroups(const Image& passes, const PassPlan& plan) {
+void packPassGroups(const Image& passes, const PassPlan& plan,
+                    std::vector<std::vector<float>>& groups) {
   if (passes.channels != int(plan.names.size())) {
     throw Error("the frame has " + std::to_string(passes.channels) +
                 " pass channels where the first frame had " + std::to_string(plan.names.size()));
   }
   const std::size_t pixels = std::size_t(passes.width) * std::size_t(passes.height);
   const std::size_t stride = std::size_t(passes.channels);
-  std::vector<std::vector<float>> groups(std::size_t(plan.groups()),
-                                         std::vector<float>(pixels * 4, 0.0f));
-  for (std::size_t v = 0; v < plan.valueChannel.size(); ++v) {
-    std::vector<float>& group = groups[v / 4];
-    const std::size_t slot = v % 4;
-    const std::size_t channel = std::size_t(plan.valueChannel[v]);
-    const int factor = plan.valueFactor[v];
-    const float* in = passes.pixels.data();
-    if (factor < 0) {
-      for (std::size_t i = 0; i < pixels; ++i) group[4 * i + slot] = in[i * stride + channel];
-    } else {
-      for (std::size_t i = 0; i < pixels; ++i) {
-        group[4 * i + slot] = in[i * stride + channel] * in[i * stride + std::size_t(factor)];
-      }
+  groups.resize(std::size_t(plan.groups()));
+  for (std::vector<float>& group : groups) group.resize(pixels * 4, 0.0f);  // unused slots stay 0
+  const std::size_t values = plan.valueChannel.size();
+  std::vector<float*> targets;
+  for (std::size_t v = 0; v < values; ++v) targets.push_back(groups[v / 4].data() + v % 4);
+  // Pixel by pixel: a pixel's channels are neighbours in memory, a channel's are not.
+  for (std::size_t i = 0; i < pixels; ++i) {
+    const float* row = &passes.pixels[i * stride];
+    for (std::size_t v = 0; v < values; ++v) {
+      const int factor = plan.valueFactor[v];
+      const float value = row[plan.valueChannel[v]];
+      targets[v][4 * i] = factor < 0 ? value : value * row[factor];
     }
   }
-  return groups;
 }
 
 Image keptChannels(const Image& passes, const PassPlan& plan) {
   Image kept(passes.width, passes.height, plan.keptCount);
   const std::size_t pixels = std::size_t(passes.width) * std::size_t(passes.height);
+  const std::size_t in = std::size_t(passes.channels), out = std::size_t(plan.keptCount);
+  std::vector<std::size_t> from;  // kept channel k is input channel from[k]
   for (std::size_t c = 0; c < plan.kept.size(); ++c) {
-    const int k = plan.kept[c];
-    if (k < 0) continue;
-    for (std::size_t i = 0; i < pixels; ++i) {
-      kept.pixels[i * std::size_t(plan.keptCount) + std::size_t(k)] =
-          passes.pixels[i * std::size_t(passes.channels) + c];
-    }
+    if (plan.kept[c] >= 0) from.push_back(c);
+  }
+  // Pixel by pixel: a pixel's channels are neighbours in memory, a channel's are not.
+  for (std::size_t i = 0; i < pixels; ++i) {
+    const float* source = &passes.pixels[i * in];
+    float* target = &kept.pixels[i * out];
+    for (std::size_t k = 0; k < out; ++k) target[k] = source[from[k]];
   }
   return kept;
 }
@@ -130,22 +131,25 @@ Image finishPasses(const std::vector<Image>& sums, const Image& kept, const Pass
   Image out(width, height, int(plan.names.size()));
   const std::size_t pixels = std::size_t(width) * std::size_t(height);
   const std::size_t stride = plan.names.size();
-  auto sumAt = [&](int value, std::size_t i) {
-    return sums[std::size_t(value / 4)].pixels[4 * i + std::size_t(value % 4)];
-  };
-  for (std::size_t c = 0; c < stride; ++c) {
-    const int value = plan.value[c];
-    const int factor = plan.factor[c];
-    for (std::size_t i = 0; i < pixels; ++i) {
-      float v = value < 0 ? kept.pixels[i * std::size_t(plan.keptCount) + std::size_t(plan.kept[c])]
-                          : sumAt(value, i);
+  const std::size_t keptStride = std::size_t(plan.keptCount);
+  for (std::size_t i = 0; i < pixels; ++i) {
+    float* target = &out.pixels[i * stride];
+    for (std::size_t c = 0; c < stride; ++c) {
+      const int value = plan.value[c];
+      if (value < 0) {
+        target[c] = kept.pixels[i * keptStride + std::size_t(plan.kept[c])];
+        continue;
+      }
+      float v = sums[std::size_t(value / 4)].pixels[4 * i + std::size_t(value % 4)];
+      const int factor = plan.factor[c];
       if (factor >= 0) {
         // Light = (light x factor) / factor, as the renderer divides its sums; where no
         // sample had any factor (black albedo) the light is 0, as Cycles writes it.
-        const float f = sumAt(plan.value[std::size_t(factor)], i);
+        const int fv = plan.value[std::size_t(factor)];
+        const float f = sums[std::size_t(fv / 4)].pixels[4 * i + std::size_t(fv % 4)];
         v = f != 0.0f ? v / f : 0.0f;
       }
-      out.pixels[i * stride + c] = v;
+      target[c] = v;
     }
   }
   for (int x : plan.normalX) {

@@ -45,8 +45,11 @@ PassPlan planPasses(const std::vector<std::string>& names,
                     const std::vector<OIIO::TypeDesc>& formats,
                     const std::vector<io::ChannelKindRule>& rules);
 
-// Group g's values of every pixel, RGBA interleaved (unused slots 0): what the ring holds.
-std::vector<std::vector<float>> packPassGroups(const Image& passes, const PassPlan& plan);
+// Group g's values of every pixel, RGBA interleaved (unused slots 0), into `groups[g]`: what
+// the ring holds. The buffers are reused from frame to frame (a render's every pass is about
+// 400 MB of them at 1080p, which fresh allocations would fault in every frame).
+void packPassGroups(const Image& passes, const PassPlan& plan,
+                    std::vector<std::vector<float>>& groups);
 
 // Frame t's channels that are not summed (PassPlan::kept), from its pass channels as read: what
 // the output takes from t itself, kept while the frame waits for its turn.

@@ -409,7 +409,8 @@ struct JobRun {
   // channels, then the diagnostics.
   std::function<void()> writeOf(const io::FrameData& data, TypedImage output,
                                 io::ExtraChannels debug,
-                                const std::vector<TypedImage>& otherViews = {}) const {
+                                const std::vector<TypedImage>& otherViews = {},
+                                io::ExtraChannels passes = {}) const {
     OIIO::ImageSpec spec = data.colorSpec;
     spec.attribute("taa:version", TAA_VERSION_STRING);
     spec.attribute("taa:options", options);
@@ -430,7 +431,7 @@ struct JobRun {
       colorNames.insert(colorNames.end(), viewNames[v].begin(), viewNames[v].end());
     }
     io::appendExtraChannels(extra, passthroughWithout(data.passthrough, colorNames));
-    if (!data.passes.names.empty()) io::appendExtraChannels(extra, data.passes);
+    io::appendExtraChannels(extra, std::move(passes));
     if (!debug.names.empty()) io::appendExtraChannels(extra, debug);
     return [path = io::expandFramePattern(job.outputPattern, data.frame),
             output = std::move(output), spec = std::move(spec), this, extra = std::move(extra),
@@ -570,6 +571,7 @@ void runWindow(JobRun& run, gl::Context& context) {
   // The passes (issue 21): planned from the first frame read, every frame the same channels.
   std::optional<PassPlan> passPlan;
   std::string passFile;  // the file the plan came from, for the message when one differs
+  std::vector<std::vector<float>> passGroups;  // a frame's packed pass values, reused
   std::vector<int> inRing;
 
   for (int index = 0; index < int(outputs.size()); ++index) {
@@ -593,7 +595,6 @@ void runWindow(JobRun& run, gl::Context& context) {
                           "their motion vectors only");
         toldVectorsOnly = true;
       }
-      std::vector<std::vector<float>> passGroups;
       if (!passPlan) {
         passPlan = planPasses(data.passes.names, data.passes.formats,
                               io::passRulesOf(*run.layouts.front()));
@@ -612,7 +613,7 @@ void runWindow(JobRun& run, gl::Context& context) {
                     {data.colorPath, f, ""});
       }
       if (!passPlan->empty()) {
-        passGroups = packPassGroups(data.passes.image, *passPlan);
+        packPassGroups(data.passes.image, *passPlan, passGroups);
         data.passes.image = keptChannels(data.passes.image, *passPlan);
       }
       for (std::size_t v = 0; v < resolvers.size(); ++v) {
@@ -653,13 +654,15 @@ void runWindow(JobRun& run, gl::Context& context) {
     }
     TypedImage output = std::move(views.front());
     views.erase(views.begin());
+    io::ExtraChannels passes = std::move(data.passes);
     if (passPlan && !passPlan->empty()) {
       // The passes in the file's order and types, after the colour.
-      data.passes.image = finishPasses(resolver.lastPasses(), data.passes.image, *passPlan);
+      passes.image = finishPasses(resolver.lastPasses(), passes.image, *passPlan);
     }
     io::ExtraChannels debug;
     if (job.debugLayers) debug = windowDebugChannels(resolver.lastDebug(), data.nonFiniteMask);
-    writes.push(run.writeOf(data, std::move(output), std::move(debug), views), index);
+    writes.push(run.writeOf(data, std::move(output), std::move(debug), views, std::move(passes)),
+                index);
   }
   writes.finish();
 }
