@@ -35,6 +35,9 @@
 #ifndef PASS_GROUPS
 #define PASS_GROUPS 0  // groups of four pass values summed with the beauty's weights (issue 21)
 #endif
+#ifndef CRYPTOMATTE
+#define CRYPTOMATTE 0  // 1: a Cryptomatte set's IDs, weighed as the beauty's samples (issue 21)
+#endif
 #ifndef CHAINS
 #define CHAINS 1  // 0: no frame of the window has moving samples; the chains' code is left out
 #endif            // (llvmpipe would run it, masked, for every pixel)
@@ -86,14 +89,23 @@ layout(location = 1) out vec4 outDebug;  // weight gathered, rejected fraction, 
 // ring's, never moves). Every sample that enters the beauty's sums enters theirs with the same
 // weight, so a relation that is linear per sample (Combined = the sum of the light passes)
 // holds in the result.
-#if PASS_GROUPS > 0
-uniform sampler2DArray uPasses[PASS_GROUPS];
+#if PASS_GROUPS > 0 || CRYPTOMATTE
 uniform int uTargetPassLayer;
 uniform int uSourcePassLayer[MAX_SOURCES];
+int gSourcePassLayer;
+#endif
+#if CRYPTOMATTE
+#include "window_cryptomatte.glsl"
+layout(location = 2) out vec4 outCrypto[3];  // rank layers 0..2: id, coverage, id, coverage
+#define ADD_CRYPTO(texel, layer, weight, toSource) cryptoAddSample(texel, layer, weight, toSource);
+#else
+#define ADD_CRYPTO(texel, layer, weight, toSource)
+#endif
+#if PASS_GROUPS > 0
+uniform sampler2DArray uPasses[PASS_GROUPS];
 layout(location = 2) out vec4 outPasses[PASS_GROUPS];
 vec4 gPassSum[PASS_GROUPS];
 vec4 gSourcePassSum[PASS_GROUPS];
-int gSourcePassLayer;
 #define ADD_PASSES(sums, n, layer, weight)                                   \
   for (int g = 0; g < PASS_GROUPS; ++g) {                                    \
     sums[g] += (weight) * texelFetch(uPasses[g], ivec3((n), (layer)), 0);    \
@@ -207,6 +219,8 @@ void addStaticSample(ivec2 corner, ivec2 step, bool skip, ivec2 taken, float fra
   ivec2 texel = clamp(n, ivec2(0), gSize - 1);
   ADD_PASSES(gPassSum, texel, gSourcePassLayer, thinWeight)
   ADD_PASSES(gSourcePassSum, texel, gSourcePassLayer, thin ? 0.0 : kept)
+  ADD_CRYPTO(texel, gSourcePassLayer, thinWeight, false)
+  ADD_CRYPTO(texel, gSourcePassLayer, thin ? 0.0 : kept, true)
 }
 
 // The static samples of the current source in the 2x2 block at `corner` (with `skip`, those
@@ -242,6 +256,7 @@ void addMovingSample(ivec2 corner, ivec2 step, vec2 chained, bool alive) {
   addSourceSample(entry.colour, candidate ? weight : 0.0);
   ADD_PASSES(gSourcePassSum, clamp(n, ivec2(0), gSize - 1), gSourcePassLayer,
              candidate ? weight : 0.0)
+  ADD_CRYPTO(clamp(n, ivec2(0), gSize - 1), gSourcePassLayer, candidate ? weight : 0.0, true)
 }
 
 // The moving samples of the current source in the 2x2 block around the chained point, if the
@@ -273,6 +288,9 @@ void main() {
   gFarthest = 0.0;
   gThinDepth = 1.0 / 0.0;
   vec3 rgbMin = vec3(1e30), rgbMax = vec3(-1e30);
+#if CRYPTOMATTE
+  cryptoBegin();
+#endif
 #if PASS_GROUPS > 0
   vec4 filteredPasses[PASS_GROUPS];
   for (int g = 0; g < PASS_GROUPS; ++g) {
@@ -309,6 +327,7 @@ void main() {
                             : 0.0;
       float y = decisionLuma(colour);
       ADD_PASSES(gPassSum, n, uTargetPassLayer, w)
+      ADD_CRYPTO(n, uTargetPassLayer, w, false)
       ADD_PASSES(filteredPasses, n, uTargetPassLayer, uReconstruction[3 * (dy + 1) + dx + 1])
       ownWeight += w;
       ownSum += w * colour;
@@ -398,9 +417,14 @@ void main() {
     gSourceSum = vec4(0.0);
     gSourceLumaSum = 0.0;
     gSourceLumaSquares = 0.0;
-#if PASS_GROUPS > 0
+#if PASS_GROUPS > 0 || CRYPTOMATTE
     gSourcePassLayer = uSourcePassLayer[k];
+#endif
+#if PASS_GROUPS > 0
     for (int g = 0; g < PASS_GROUPS; ++g) gSourcePassSum[g] = vec4(0.0);
+#endif
+#if CRYPTOMATTE
+    cryptoSourceBegin();
 #endif
     if (uSourceHasCamera[k] != 0 && uTargetHasCamera) {
       // The near surface's block, then, where the pixel needs it, a second surface's: the
@@ -466,6 +490,9 @@ void main() {
 #if PASS_GROUPS > 0
       for (int g = 0; g < PASS_GROUPS; ++g) gPassSum[g] += agreement * frameWeight * gSourcePassSum[g];
 #endif
+#if CRYPTOMATTE
+      cryptoSourceEnd(agreement * frameWeight);
+#endif
       gWeight += agreement * frameWeight * gSourceWeight;
       gDisagreeing += (1.0 - agreement) * gSourceWeight;
       within += gSourceLumaSquares - gSourceWeight * mean * mean;
@@ -483,6 +510,9 @@ void main() {
 #endif
 #if PASS_GROUPS > 0
   for (int g = 0; g < PASS_GROUPS; ++g) outPasses[g] = finiteOutput(gPassSum[g] / gWeight);
+#endif
+#if CRYPTOMATTE
+  cryptoOutput(outCrypto[0], outCrypto[1], outCrypto[2]);
 #endif
   // Rejected: hidden candidates, and the weight of sources left out for their colour.
   float rejected = gHidden + gDisagreeing;

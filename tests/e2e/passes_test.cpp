@@ -24,6 +24,10 @@ using test::ToolRun;
 
 constexpr int kWidth = 64, kHeight = 40, kFrames = 6;
 
+// Two Cryptomatte IDs (hashes stored as floats): the object where red outweighs green, and the
+// rest.
+constexpr float kIdRed = 1.5e-3f, kIdOther = -7.25e10f;
+
 struct Exr {
   OIIO::ImageSpec spec;
   std::vector<float> pixels;
@@ -86,12 +90,18 @@ class PassesTest : public ::testing::Test {
     for (const std::string pass : {"DiffDir", "DiffCol", "GlossDir", "GlossCol", "Emit"}) {
       for (const std::string& c : kRgb) names.push_back(pass + "." + c);
     }
-    for (const char* c : {"Normal.X", "Normal.Y", "Normal.Z", "IndexOB.X"}) names.push_back(c);
+    for (const char* c : {"Normal.X", "Normal.Y", "Normal.Z", "IndexOB.X", "MatteRed.R"}) {
+      names.push_back(c);
+    }
+    for (const char* layer : {"CryptoObject00.", "CryptoObject01."}) {
+      for (const char* c : {"r", "g", "b", "a"}) names.push_back(layer + std::string(c));
+    }
     spec.nchannels = int(names.size());
     spec.channelnames = names;
     spec.alpha_channel = 3;
     for (const std::string& name : names) {
-      const bool data = name.rfind("Normal", 0) == 0 || name.rfind("IndexOB", 0) == 0;
+      const bool data = name.rfind("Normal", 0) == 0 || name.rfind("IndexOB", 0) == 0 ||
+                        name.rfind("Crypto", 0) == 0 || name.rfind("Matte", 0) == 0;
       spec.channelformats.push_back(data ? OIIO::TypeFloat : OIIO::TypeHalf);
     }
     std::vector<float> pixels;
@@ -111,7 +121,15 @@ class PassesTest : public ::testing::Test {
       pixels.push_back(std::sin(angle));
       pixels.push_back(0.0f);
       pixels.push_back(r > g ? 2.0f : 1.0f);
+      // The red object's matte as a light pass, and as Cryptomatte: one ID a sample, coverage
+      // 1 (one sample a pixel), the second pair and the second rank layer empty.
+      pixels.push_back(r > g ? 1.0f : 0.0f);
+      for (float v : {r > g ? kIdRed : kIdOther, 1.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f}) {
+        pixels.push_back(v);
+      }
     }
+    spec.attribute("cryptomatte/f834d0a/name", "CryptoObject");
+    spec.attribute("cryptomatte/f834d0a/hash", "MurmurHash3_32");
     auto out = OIIO::ImageOutput::create(path.string());
     ASSERT_TRUE(out && out->open(path.string(), spec));
     ASSERT_TRUE(out->write_image(OIIO::TypeFloat, pixels.data()));
@@ -173,6 +191,55 @@ TEST_F(PassesTest, EveryPassIsResolvedAndTheCompIdentityHolds) {
   }
 }
 
+// The coverage of `id` over a pixel's rank pairs: how a comp pulls a matte.
+float matteOf(const Exr& exr, std::size_t p, float id) {
+  float coverage = 0.0f;
+  for (const char* layer : {"CryptoObject00.", "CryptoObject01."}) {
+    const std::string l(layer);
+    if (exr.at(p, l + "r") == id) coverage += exr.at(p, l + "g");
+    if (exr.at(p, l + "b") == id) coverage += exr.at(p, l + "a");
+  }
+  return coverage;
+}
+
+// Cryptomatte: each ID's coverage is the weighted share of the samples that carry it, weighed
+// as the beauty weighs them: the same as a light pass of the same matte (the reconstruction's
+// taps, which a coverage cannot take, are left out of both), ranks heaviest first, the
+// metadata kept, edges anti-aliased where the input's are hard.
+TEST_F(PassesTest, CryptomatteCoverageIsTheWeightedShareOfTheSamples) {
+  const ToolRun r = run({"--window-reconstruction-weight", "0"});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const int f = 3;
+  const Exr in = readExr(in_ / frameName("beauty", f));
+  const Exr out = readExr(dir_ / "out" / frameName("r", f));
+  EXPECT_EQ(out.spec.get_string_attribute("cryptomatte/f834d0a/name"), "CryptoObject");
+  std::size_t softIn = 0, softOut = 0;
+  for (std::size_t p = 0; p < out.spec.image_pixels(); ++p) {
+    float total = 0.0f, previous = 2.0f;
+    for (const char* layer : {"CryptoObject00.", "CryptoObject01."}) {
+      for (const char* pair : {"rg", "ba"}) {
+        const float id = out.at(p, layer + std::string(1, pair[0]));
+        const float coverage = out.at(p, layer + std::string(1, pair[1]));
+        ASSERT_LE(coverage, previous) << "pixel " << p << ": ranks not heaviest first";
+        previous = coverage;
+        total += coverage;
+        if (coverage > 0.0f) {
+          ASSERT_TRUE(id == kIdRed || id == kIdOther) << "pixel " << p;
+        }
+      }
+    }
+    ASSERT_NEAR(total, 1.0f, 1e-4f) << "pixel " << p;
+    const float matte = matteOf(out, p, kIdRed);
+    ASSERT_NEAR(matte, out.at(p, "MatteRed.R"), 2e-3f) << "pixel " << p;
+    softOut += matte > 0.05f && matte < 0.95f;
+    softIn += matteOf(in, p, kIdRed) > 0.05f && matteOf(in, p, kIdRed) < 0.95f;
+  }
+  EXPECT_EQ(softIn, 0u);
+  EXPECT_GT(softOut, 20u);
+  std::printf("Cryptomatte: %zu pixels of the red object's matte between 0.05 and 0.95\n",
+              softOut);
+}
+
 TEST_F(PassesTest, AovRulesChooseKindsAndDropChannels) {
   // Everything but the colour dropped: the colour alone, as before passes were resolved.
   ToolRun r = run({"--aov", "*=drop"}, "dropped");
@@ -185,7 +252,7 @@ TEST_F(PassesTest, AovRulesChooseKindsAndDropChannels) {
   ASSERT_EQ(r.exitCode, 0) << r.err;
   out = readExr(dir_ / "copied" / frameName("r", 3));
   const Exr in = readExr(in_ / frameName("beauty", 3));
-  EXPECT_EQ(out.spec.nchannels, 7);
+  EXPECT_EQ(out.spec.nchannels, 7);  // R, G, B, A and DiffCol's three
   for (std::size_t p = 0; p < in.spec.image_pixels(); ++p) {
     ASSERT_EQ(out.at(p, "DiffCol.G"), in.at(p, "DiffCol.G")) << "pixel " << p;
   }

@@ -75,7 +75,7 @@ TEST(PassPlan, ProductsAreSummedAndDividedAndNormalsRenormalised) {
   for (int g = 0; g < 2; ++g) {
     for (int c = 0; c < 4; ++c) sums[g].pixels[c] = 0.5f * (ga[g][c] + gb[g][c]);
   }
-  const Image out = finishPasses(sums, keptChannels(a, plan), plan);
+  const Image out = finishPasses(sums, {}, keptChannels(a, plan), plan);
   const float light = 0.5f * (0.2f * 0.5f + 0.6f * 1.0f);
   EXPECT_FLOAT_EQ(out.pixels[1], 0.75f);
   EXPECT_FLOAT_EQ(out.pixels[0] * out.pixels[1], light);

@@ -1,6 +1,7 @@
 #include "resolve/pass_plan.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <map>
 
@@ -21,6 +22,39 @@ std::string componentOf(const std::string& name) { return name.substr(name.rfind
 std::string stemOf(const std::string& name) {
   const std::size_t dot = name.rfind('.');
   return dot == std::string::npos ? "" : name.substr(0, dot);
+}
+
+// Cryptomatte sets among the channels: "<set><NN>.<r|g|b|a>" of kind Cryptomatte, every rank
+// layer from 00 on complete (R, G, B, A spellings too). Others stay t's own.
+void findCryptomatteSets(PassPlan& plan, const std::map<std::string, int>& index) {
+  std::map<std::string, bool> seen;
+  for (std::size_t c = 0; c < plan.names.size(); ++c) {
+    if (plan.kinds[c] != ChannelKind::Cryptomatte) continue;
+    const std::string stem = stemOf(plan.names[c]);  // "ViewLayer.CryptoObject00"
+    if (stem.size() < 3 || !std::isdigit((unsigned char)stem[stem.size() - 1]) ||
+        !std::isdigit((unsigned char)stem[stem.size() - 2])) {
+      continue;
+    }
+    const std::string set = stem.substr(0, stem.size() - 2);
+    if (seen.count(set)) continue;
+    seen[set] = true;
+    PassPlan::CryptomatteSet found{set, {}};
+    for (int layer = 0; layer < 100; ++layer) {
+      const std::string prefix = set + (layer < 10 ? "0" : "") + std::to_string(layer) + ".";
+      std::array<int, 4> channels{};
+      bool complete = true;
+      for (int k = 0; k < 4; ++k) {
+        auto it = index.find(prefix + "rgba"[k]);
+        if (it == index.end()) it = index.find(prefix + "RGBA"[k]);
+        complete = complete && it != index.end() &&
+                   plan.kinds[std::size_t(it->second)] == ChannelKind::Cryptomatte;
+        if (complete) channels[std::size_t(k)] = it->second;
+      }
+      if (!complete) break;
+      found.layers.push_back(channels);
+    }
+    if (!found.layers.empty()) plan.cryptomatte.push_back(found);
+  }
 }
 
 }  // namespace
@@ -49,9 +83,16 @@ PassPlan planPasses(const std::vector<std::string>& names,
     plan.valueChannel.push_back(c);
     plan.valueFactor.push_back(plan.factor[std::size_t(c)]);
   }
+  findCryptomatteSets(plan, index);
+  std::vector<bool> inSet(names.size(), false);
+  for (const PassPlan::CryptomatteSet& set : plan.cryptomatte) {
+    for (const auto& layer : set.layers) {
+      for (int c : layer) inSet[std::size_t(c)] = true;
+    }
+  }
   plan.kept.assign(names.size(), -1);
   for (std::size_t c = 0; c < names.size(); ++c) {
-    if (plan.value[c] < 0) plan.kept[c] = plan.keptCount++;
+    if (plan.value[c] < 0 && !inSet[c]) plan.kept[c] = plan.keptCount++;
   }
   for (int g = 0; g < plan.groups(); ++g) {
     bool half = true;
@@ -108,6 +149,23 @@ void packPassGroups(const Image& passes, const PassPlan& plan,
   }
 }
 
+void packCryptomatte(const Image& passes, const PassPlan& plan,
+                     std::vector<std::vector<float>>& layers) {
+  const std::size_t pixels = std::size_t(passes.width) * std::size_t(passes.height);
+  const std::size_t stride = std::size_t(passes.channels);
+  layers.resize(plan.cryptomatte.size());
+  for (std::size_t s = 0; s < plan.cryptomatte.size(); ++s) {
+    const std::array<int, 4>& first = plan.cryptomatte[s].layers.front();
+    std::vector<float>& layer = layers[s];
+    layer.resize(pixels * 4);
+    for (std::size_t i = 0; i < pixels; ++i) {
+      for (std::size_t k = 0; k < 4; ++k) {
+        layer[4 * i + k] = passes.pixels[i * stride + std::size_t(first[k])];
+      }
+    }
+  }
+}
+
 Image keptChannels(const Image& passes, const PassPlan& plan) {
   Image kept(passes.width, passes.height, plan.keptCount);
   const std::size_t pixels = std::size_t(passes.width) * std::size_t(passes.height);
@@ -125,7 +183,8 @@ Image keptChannels(const Image& passes, const PassPlan& plan) {
   return kept;
 }
 
-Image finishPasses(const std::vector<Image>& sums, const Image& kept, const PassPlan& plan) {
+Image finishPasses(const std::vector<Image>& sums, const std::vector<Image>& cryptomatte,
+                   const Image& kept, const PassPlan& plan) {
   const int width = sums.empty() ? kept.width : sums.front().width;
   const int height = sums.empty() ? kept.height : sums.front().height;
   Image out(width, height, int(plan.names.size()));
@@ -136,8 +195,8 @@ Image finishPasses(const std::vector<Image>& sums, const Image& kept, const Pass
     float* target = &out.pixels[i * stride];
     for (std::size_t c = 0; c < stride; ++c) {
       const int value = plan.value[c];
-      if (value < 0) {
-        target[c] = kept.pixels[i * keptStride + std::size_t(plan.kept[c])];
+      if (value < 0) {  // kept, or Cryptomatte (written below)
+        if (plan.kept[c] >= 0) target[c] = kept.pixels[i * keptStride + std::size_t(plan.kept[c])];
         continue;
       }
       float v = sums[std::size_t(value / 4)].pixels[4 * i + std::size_t(value % 4)];
@@ -150,6 +209,18 @@ Image finishPasses(const std::vector<Image>& sums, const Image& kept, const Pass
         v = f != 0.0f ? v / f : 0.0f;
       }
       target[c] = v;
+    }
+  }
+  // Cryptomatte: the resolve's three rank layers into the set's layers (more layers are 0).
+  for (std::size_t s = 0; s < plan.cryptomatte.size(); ++s) {
+    const PassPlan::CryptomatteSet& set = plan.cryptomatte[s];
+    for (std::size_t layer = 0; layer < set.layers.size(); ++layer) {
+      for (std::size_t i = 0; i < pixels; ++i) {
+        for (std::size_t k = 0; k < 4; ++k) {
+          out.pixels[i * stride + std::size_t(set.layers[layer][k])] =
+              layer < 3 ? cryptomatte[3 * s + layer].pixels[4 * i + k] : 0.0f;
+        }
+      }
     }
   }
   for (int x : plan.normalX) {

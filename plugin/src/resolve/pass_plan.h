@@ -5,11 +5,15 @@
 //   accumulates light, and divided by the summed factor at the end, so Dir x Col of the result
 //   is the resolved light and Combined = sum of (Dir + Ind) x Col + Emit + Env still holds;
 // - light, factor, average: summed; normal: summed, then the vector renormalised;
-// - nearest, Cryptomatte (for now), copy: frame t's own value, never a blend.
+// - Cryptomatte: each set's first rank layer (two ID / coverage pairs a sample) goes to the GPU,
+//   which weighs each sample's IDs as the beauty weighs the sample and writes the six heaviest
+//   back as three rank layers (glsl/window_cryptomatte.glsl);
+// - nearest, copy: frame t's own value, never a blend.
 #pragma once
 
 #include <OpenImageIO/typedesc.h>
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -35,6 +39,13 @@ struct PassPlan {
   int keptCount = 0;
   // Per group: whether its ring may hold halves (every value from half channels).
   std::vector<bool> halfGroups;
+  // Cryptomatte sets ("ViewLayer.CryptoObject"): each rank layer's r, g, b, a channels, from
+  // layer 00 on. Their channels are neither summed nor kept.
+  struct CryptomatteSet {
+    std::string name;
+    std::vector<std::array<int, 4>> layers;
+  };
+  std::vector<CryptomatteSet> cryptomatte;
 
   int groups() const { return int((valueChannel.size() + 3) / 4); }
   bool empty() const { return names.empty(); }
@@ -51,12 +62,18 @@ PassPlan planPasses(const std::vector<std::string>& names,
 void packPassGroups(const Image& passes, const PassPlan& plan,
                     std::vector<std::vector<float>>& groups);
 
+// Each Cryptomatte set's first rank layer, RGBA interleaved, into `layers[set]` (reused).
+void packCryptomatte(const Image& passes, const PassPlan& plan,
+                     std::vector<std::vector<float>>& layers);
+
 // Frame t's channels that are not summed (PassPlan::kept), from its pass channels as read: what
 // the output takes from t itself, kept while the frame waits for its turn.
 Image keptChannels(const Image& passes, const PassPlan& plan);
 
-// The resolved channels from the gather's sums (one RGBA image per group) and frame t's kept
-// channels (keptChannels): an image with `plan.names`' channels in their order.
-Image finishPasses(const std::vector<Image>& sums, const Image& kept, const PassPlan& plan);
+// The resolved channels from the gather's sums (one RGBA image per group), its Cryptomatte
+// ranks (three RGBA images per set: id, coverage, id, coverage) and frame t's kept channels
+// (keptChannels): an image with `plan.names`' channels in their order.
+Image finishPasses(const std::vector<Image>& sums, const std::vector<Image>& cryptomatte,
+                   const Image& kept, const PassPlan& plan);
 
 }  // namespace taa

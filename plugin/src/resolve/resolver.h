@@ -28,6 +28,8 @@ struct ResolveInput {
   // Window mode: the frame's pass values, RGBA float per group (resolve/pass_plan), as many as
   // WindowResolver::setPassGroups said.
   std::vector<const float*> passGroups;
+  // And each Cryptomatte set's first rank layer, RGBA float (resolve/pass_plan).
+  std::vector<const float*> cryptomatte;
 };
 
 // Per-pixel diagnostics of the last frame (setDebugOutput): RGBA = (weight given to history,

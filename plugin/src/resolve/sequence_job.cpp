@@ -572,6 +572,7 @@ void runWindow(JobRun& run, gl::Context& context) {
   std::optional<PassPlan> passPlan;
   std::string passFile;  // the file the plan came from, for the message when one differs
   std::vector<std::vector<float>> passGroups;  // a frame's packed pass values, reused
+  std::vector<std::vector<float>> cryptomatte;  // and its Cryptomatte sets' first layers
   std::vector<int> inRing;
 
   for (int index = 0; index < int(outputs.size()); ++index) {
@@ -599,7 +600,7 @@ void runWindow(JobRun& run, gl::Context& context) {
         passPlan = planPasses(data.passes.names, data.passes.formats,
                               io::passRulesOf(*run.layouts.front()));
         passFile = data.colorPath;
-        resolver.setPassGroups(passPlan->halfGroups);
+        resolver.setPasses(passPlan->halfGroups, int(passPlan->cryptomatte.size()));
         if (run.callbacks.detail && !passPlan->empty()) {
           std::string kinds;
           for (std::size_t c = 0; c < passPlan->names.size(); ++c) {
@@ -614,12 +615,14 @@ void runWindow(JobRun& run, gl::Context& context) {
       }
       if (!passPlan->empty()) {
         packPassGroups(data.passes.image, *passPlan, passGroups);
+        packCryptomatte(data.passes.image, *passPlan, cryptomatte);
         data.passes.image = keptChannels(data.passes.image, *passPlan);
       }
       for (std::size_t v = 0; v < resolvers.size(); ++v) {
         ResolveInput input = run.inputOf(JobRun::view(data, v), v == 0);
         if (v == 0) {
           for (const std::vector<float>& group : passGroups) input.passGroups.push_back(group.data());
+          for (const std::vector<float>& set : cryptomatte) input.cryptomatte.push_back(set.data());
         }
         try {
           resolvers[v]->addFrame(f, input);
@@ -657,7 +660,8 @@ void runWindow(JobRun& run, gl::Context& context) {
     io::ExtraChannels passes = std::move(data.passes);
     if (passPlan && !passPlan->empty()) {
       // The passes in the file's order and types, after the colour.
-      passes.image = finishPasses(resolver.lastPasses(), passes.image, *passPlan);
+      passes.image = finishPasses(resolver.lastPasses(), resolver.lastCryptomatte(), passes.image,
+                                  *passPlan);
     }
     io::ExtraChannels debug;
     if (job.debugLayers) debug = windowDebugChannels(resolver.lastDebug(), data.nonFiniteMask);

@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <map>
 #include <optional>
@@ -81,7 +82,8 @@ struct WindowResolver::Impl {
   // The gather with (index 1) and without (0) the chains of moving samples: a window whose
   // frames have no moving sample uses the one without, which llvmpipe runs in half the time.
   gl::Program gatherPrograms[2];
-  // And with PASS_GROUPS n (1 to kPassGroupsPerDraw), built when first needed: [chains][n - 1].
+  // And with PASS_GROUPS n (1 to kPassGroupsPerDraw) or CRYPTOMATTE (n = -1), built when first
+  // needed, by (chains, n).
   std::vector<std::string> gatherPrefix[2];
   std::map<std::pair<int, int>, gl::Program> passPrograms;
   gl::AnySamplesQuery movingQuery;
@@ -112,6 +114,11 @@ struct WindowResolver::Impl {
   std::vector<gl::Texture> passOutputs;
   std::vector<gl::Framebuffer> passTargets;  // per draw: output, debug, its groups' sums
   std::vector<Image> lastPasses;
+  int cryptomatteSets = 0;
+  std::vector<gl::TextureArray> cryptomatteRings;  // RGBA32F, at the frames' pass layers
+  std::vector<gl::Texture> cryptomatteOutputs;      // three a set
+  std::vector<gl::Framebuffer> cryptomatteTargets;  // a set's draw: output, -, its three ranks
+  std::vector<Image> lastCryptomatte;
 
   // How a frame's samples were last classified (window_classify.frag's modes).
   struct Slot {
@@ -180,14 +187,15 @@ struct WindowResolver::Impl {
     passPrograms.clear();
   }
 
-  // The gather with `groups` pass groups (0: the beauty alone).
+  // The gather with `groups` pass groups (0: the beauty alone; -1: a Cryptomatte set).
   const gl::Program& gatherProgram(int chains, int groups) {
     if (groups == 0) return gatherPrograms[chains];
     const auto key = std::make_pair(chains, groups);
     auto found = passPrograms.find(key);
     if (found != passPrograms.end()) return found->second;
     std::vector<std::string> prefix = gatherPrefix[chains];
-    prefix.insert(prefix.begin(), "#define PASS_GROUPS " + std::to_string(groups));
+    prefix.insert(prefix.begin(), groups < 0 ? std::string("#define CRYPTOMATTE 1")
+                                             : "#define PASS_GROUPS " + std::to_string(groups));
     gl::Program p(gl, gl::embeddedShaderSource("fullscreen.vert"),
                   gl::embeddedShaderSource("window_gather.frag", prefix));
     fromWorkingLuts.setUniforms(p);
@@ -204,15 +212,24 @@ struct WindowResolver::Impl {
     return kFirstOcioUnit + fromWorkingLuts.unitCount() + gatherToWorkingLuts.unitCount();
   }
 
+  bool hasPasses() const { return !passHalf.empty() || cryptomatteSets > 0; }
+
   void allocatePasses() {
     passRings.clear();
     passOutputs.clear();
     passTargets.clear();
     freePassLayers.clear();
-    if (passHalf.empty() || width == 0) return;
+    cryptomatteRings.clear();
+    cryptomatteOutputs.clear();
+    cryptomatteTargets.clear();
+    if (!hasPasses() || width == 0) return;
     for (bool half : passHalf) {
       passRings.emplace_back(gl, width, height, capacity(), half ? GL_RGBA16F : GL_RGBA32F);
       passOutputs.emplace_back(gl, width, height, GL_RGBA32F);
+    }
+    for (int s = 0; s < cryptomatteSets; ++s) {
+      cryptomatteRings.emplace_back(gl, width, height, capacity(), GL_RGBA32F);
+      for (int rank = 0; rank < 3; ++rank) cryptomatteOutputs.emplace_back(gl, width, height, GL_RGBA32F);
     }
     for (int layer = capacity() - 1; layer >= 0; --layer) freePassLayers.push_back(layer);
   }
@@ -377,10 +394,13 @@ struct WindowResolver::Impl {
                       std::to_string(height) + " (a new size needs a new shot: --reset-frames)",
                   {"", frame, "color"});
     }
-    if (input.passGroups.size() != passHalf.size()) {
+    if (input.passGroups.size() != passHalf.size() ||
+        int(input.cryptomatte.size()) != cryptomatteSets) {
       throw Error("window resolve: frame brings " + std::to_string(input.passGroups.size()) +
-                      " pass groups where the resolve was set up for " +
-                      std::to_string(passHalf.size()),
+                      " pass groups and " + std::to_string(input.cryptomatte.size()) +
+                      " Cryptomatte sets where the resolve was set up for " +
+                      std::to_string(passHalf.size()) + " and " +
+                      std::to_string(cryptomatteSets),
                   {"", frame});
     }
     if (freeLayers.empty()) {
@@ -396,11 +416,14 @@ struct WindowResolver::Impl {
     slot.hasDepth = bool(input.depth);
     slot.hasMotion = bool(input.motion);
     freeLayers.pop_back();
-    if (!passHalf.empty()) {
+    if (hasPasses()) {
       slot.passLayer = freePassLayers.back();
       freePassLayers.pop_back();
       for (std::size_t g = 0; g < passRings.size(); ++g) {
         passRings[g].upload(slot.passLayer, input.passGroups[g], 4, GL_FLOAT);
+      }
+      for (std::size_t s = 0; s < cryptomatteRings.size(); ++s) {
+        cryptomatteRings[s].upload(slot.passLayer, input.cryptomatte[s], 4, GL_FLOAT);
       }
       gl::checkError(gl, "window pass upload");
     }
@@ -515,14 +538,16 @@ struct WindowResolver::Impl {
     }
     classifyWindow(first, last);
     const int groups = int(passHalf.size());
-    const int draws = groups == 0 ? 1 : (groups + kPassGroupsPerDraw - 1) / kPassGroupsPerDraw;
-    if (!gatherTarget.id() || gatherHasDebug != debugOutput || int(passTargets.size()) != draws) {
+    const int groupDraws = (groups + kPassGroupsPerDraw - 1) / kPassGroupsPerDraw;
+    if (!gatherTarget.id() || gatherHasDebug != debugOutput ||
+        int(passTargets.size()) != groupDraws ||
+        int(cryptomatteTargets.size()) != cryptomatteSets) {
       debug = debugOutput ? gl::Texture(gl, width, height, GL_RGBA32F) : gl::Texture();
       gatherTarget = gl::Framebuffer(
           gl, std::vector<gl::Attachment>{&output, debugOutput ? &debug : nullptr});
       gatherHasDebug = debugOutput;
       passTargets.clear();
-      for (int d = 0; d < draws && groups > 0; ++d) {
+      for (int d = 0; d < groupDraws; ++d) {
         std::vector<gl::Attachment> attachments{&output, debugOutput ? &debug : nullptr};
         for (int g = d * kPassGroupsPerDraw; g < std::min(groups, (d + 1) * kPassGroupsPerDraw);
              ++g) {
@@ -530,16 +555,24 @@ struct WindowResolver::Impl {
         }
         passTargets.emplace_back(gl, attachments);
       }
+      cryptomatteTargets.clear();
+      for (int set = 0; set < cryptomatteSets; ++set) {
+        std::vector<gl::Attachment> attachments{&output, nullptr};
+        for (int rank = 0; rank < 3; ++rank) {
+          attachments.emplace_back(&cryptomatteOutputs[std::size_t(3 * set + rank)]);
+        }
+        cryptomatteTargets.emplace_back(gl, attachments);
+      }
     }
     bool chains = false;
     for (int f : FrameSpan(first, last)) chains = chains || slots.at(f).hasMoving;
-    // With passes, each draw sums its groups with the weights the beauty's samples get (the
-    // same program text and uniforms but for the groups: the same weights, bit for bit); each
-    // writes the colour too, the same every time.
-    for (int d = 0; d < draws; ++d) {
-      const int firstGroup = d * kPassGroupsPerDraw;
-      const int drawGroups = std::min(groups - firstGroup, kPassGroupsPerDraw);
-      const gl::Program& p = gatherProgram(chains ? 1 : 0, std::max(drawGroups, 0));
+    // One draw of the gather into `target`; `variant` as gatherProgram's; `bindExtra` binds the
+    // draw's own inputs. With passes, each draw weighs the samples as the beauty's draw does
+    // (the same program text and uniforms but for its outputs: the same weights, bit for bit),
+    // and each writes the colour too, the same every time.
+    auto drawGather = [&](int variant, const gl::Framebuffer& target,
+                          const std::function<void(const gl::Program&)>& bindExtra) {
+      const gl::Program& p = gatherProgram(chains ? 1 : 0, variant);
       p.set("uSigma", options.window.sigma);
       p.set("uColourTolerance", options.window.colourTolerance);
       p.set("uDepthTolerance", options.depthTolerance);
@@ -550,20 +583,34 @@ struct WindowResolver::Impl {
       p.set("uOutputLimit", outputType == SampleType::Half ? 65504.0f
                                                            : std::numeric_limits<float>::max());
       setGatherUniforms(p, frame, first, last);
-      std::vector<int> passUnits;
-      for (int g = 0; g < drawGroups; ++g) passUnits.push_back(firstPassUnit() + g);
-      if (drawGroups > 0) p.setIntArray("uPasses", passUnits.data(), drawGroups);
-      (groups > 0 ? passTargets[std::size_t(d)] : gatherTarget).bind();
+      target.bind();
       p.use();
       ring.bind(kRingUnit);
       ringMotion.bind(kRingMotionUnit);
       fromWorkingLuts.bind();
       gatherToWorkingLuts.bind();
-      for (int g = 0; g < drawGroups; ++g) {
-        passRings[std::size_t(firstGroup + g)].bind(passUnits[std::size_t(g)]);
-      }
+      bindExtra(p);
       triangle.draw();
       gl::checkError(gl, "window gather pass");
+    };
+    if (groups == 0) drawGather(0, gatherTarget, [](const gl::Program&) {});
+    for (int d = 0; d < groupDraws; ++d) {
+      const int firstGroup = d * kPassGroupsPerDraw;
+      const int drawGroups = std::min(groups - firstGroup, kPassGroupsPerDraw);
+      drawGather(drawGroups, passTargets[std::size_t(d)], [&](const gl::Program& p) {
+        std::vector<int> units;
+        for (int g = 0; g < drawGroups; ++g) {
+          units.push_back(firstPassUnit() + g);
+          passRings[std::size_t(firstGroup + g)].bind(units.back());
+        }
+        p.setIntArray("uPasses", units.data(), drawGroups);
+      });
+    }
+    for (int set = 0; set < cryptomatteSets; ++set) {
+      drawGather(-1, cryptomatteTargets[std::size_t(set)], [&](const gl::Program& p) {
+        cryptomatteRings[std::size_t(set)].bind(firstPassUnit());
+        p.set("uCrypto", firstPassUnit());
+      });
     }
     lastPasses.assign(std::size_t(groups), Image());
     for (int g = 0; g < groups; ++g) {
@@ -571,6 +618,12 @@ struct WindowResolver::Impl {
       passTargets[std::size_t(g / kPassGroupsPerDraw)].readRGBA(sums.pixels.data(), GL_FLOAT,
                                                                  2 + g % kPassGroupsPerDraw);
       lastPasses[std::size_t(g)] = std::move(sums);
+    }
+    lastCryptomatte.assign(std::size_t(3 * cryptomatteSets), Image());
+    for (int i = 0; i < 3 * cryptomatteSets; ++i) {
+      Image ranks(width, height, 4);
+      cryptomatteTargets[std::size_t(i / 3)].readRGBA(ranks.pixels.data(), GL_FLOAT, 2 + i % 3);
+      lastCryptomatte[std::size_t(i)] = std::move(ranks);
     }
 
     if (debugOutput) {
@@ -617,13 +670,18 @@ TypedImage WindowResolver::resolve(int frame, int first, int last, SampleType ou
 
 void WindowResolver::setDebugOutput(bool enabled) { impl_->debugOutput = enabled; }
 
-void WindowResolver::setPassGroups(const std::vector<bool>& halfGroups) {
-  if (!impl_->slots.empty()) throw Error("window resolve: pass groups set with frames in the ring");
+void WindowResolver::setPasses(const std::vector<bool>& halfGroups, int cryptomatteSets) {
+  if (!impl_->slots.empty()) throw Error("window resolve: passes set with frames in the ring");
   impl_->passHalf = halfGroups;
+  impl_->cryptomatteSets = cryptomatteSets;
   impl_->allocatePasses();
 }
 
 const std::vector<Image>& WindowResolver::lastPasses() const { return impl_->lastPasses; }
+
+const std::vector<Image>& WindowResolver::lastCryptomatte() const {
+  return impl_->lastCryptomatte;
+}
 
 const Image& WindowResolver::lastDebug() const { return impl_->lastDebug; }
 

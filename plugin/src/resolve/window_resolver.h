@@ -49,11 +49,14 @@ class WindowResolver {
   TypedImage resolve(int frame, int first, int last, SampleType outputType);
 
   // Pass values summed with the beauty's weights (resolve/pass_plan): `halfGroups[g]` says
-  // whether group g's ring may hold halves (every channel in it was half). Call before the
-  // first frame or after clear(); every addFrame then brings that many groups.
-  void setPassGroups(const std::vector<bool>& halfGroups);
+  // whether group g's ring may hold halves (every channel in it was half); and the number of
+  // Cryptomatte sets weighed the same way. Call before the first frame or after clear(); every
+  // addFrame then brings that many groups and sets.
+  void setPasses(const std::vector<bool>& halfGroups, int cryptomatteSets);
   // The last resolved frame's pass sums, RGBA per group.
   const std::vector<Image>& lastPasses() const;
+  // Its Cryptomatte ranks: three RGBA images a set (id, coverage, id, coverage), heaviest first.
+  const std::vector<Image>& lastCryptomatte() const;
 
   // Keep each frame's diagnostics for lastDebug() (one more read-back per frame).
   void setDebugOutput(bool enabled);
