@@ -2,14 +2,10 @@
 
 #include <OpenEXR/openexr.h>
 
-#include <cstddef>
-#include <memory>
+#include <vector>
 
 namespace taa::io {
 namespace {
-
-// The largest first chunk decoded (a 16-line ZIP chunk of 16384 pixels and 64 float channels).
-constexpr std::size_t kMaxCheckedChunkBytes = std::size_t(64) << 20;
 
 // OpenEXR's core reports errors on stderr by default; here they are the caller's to word.
 void silent(exr_const_context_t, exr_result_t, const char*) {}
@@ -19,24 +15,18 @@ void silent(exr_const_context_t, exr_result_t, const char*) {}
 exr_result_t decodeChunk(exr_context_t context, int part, const exr_chunk_info_t& chunk) {
   exr_decode_pipeline_t decoder = EXR_DECODE_PIPELINE_INITIALIZER;
   exr_result_t result = exr_decoding_initialize(context, part, &chunk, &decoder);
-  std::unique_ptr<unsigned char[]> scratch;
+  std::vector<unsigned char> scratch;
   if (result == EXR_ERR_SUCCESS) {
     std::size_t bytes = 0;
     for (int c = 0; c < decoder.channel_count; ++c) {
       const exr_coding_channel_info_t& ch = decoder.channels[c];
       bytes += std::size_t(ch.height) * std::size_t(ch.width) * std::size_t(ch.bytes_per_element);
     }
-    // A damaged header can describe a chunk of gigabytes: nothing this check can say then
-    // (OIIO's reader reports what it finds), and no allocation of that size, nor filling it.
-    if (bytes != std::size_t(chunk.unpacked_size) || bytes > kMaxCheckedChunkBytes) {
-      exr_decoding_destroy(context, &decoder);
-      return EXR_ERR_SUCCESS;
-    }
-    scratch.reset(new unsigned char[bytes + 1]);
+    scratch.resize(bytes + 1);
     std::size_t offset = 0;
     for (int c = 0; c < decoder.channel_count; ++c) {
       exr_coding_channel_info_t& ch = decoder.channels[c];
-      ch.decode_to_ptr = scratch.get() + offset;
+      ch.decode_to_ptr = scratch.data() + offset;
       ch.user_bytes_per_element = ch.bytes_per_element;
       ch.user_data_type = ch.data_type;
       ch.user_pixel_stride = ch.bytes_per_element;
