@@ -42,3 +42,10 @@ vec4 withinWorkingRange(vec4 working, vec3 samplesMin, vec3 samplesMax) {
 vec4 finiteOutput(vec4 color) {
   return clamp(mix(color, vec4(0.0), isnan(color)), -uOutputLimit, uOutputLimit);
 }
+
+// A pass's sum (issue 21): NaN becomes 0, values stay within float's range. The pass's own
+// type's range is applied when its channels are finished (resolve/pass_plan.cpp): a float data
+// pass must keep values beyond half's 65504 when the colour is written as half.
+vec4 finitePass(vec4 value) {
+  return clamp(mix(value, vec4(0.0), isnan(value)), -3.4028235e38, 3.4028235e38);
+}

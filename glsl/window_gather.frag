@@ -509,7 +509,7 @@ void main() {
   outColor = finiteOutput(taaFromWorking(working));
 #endif
 #if PASS_GROUPS > 0
-  for (int g = 0; g < PASS_GROUPS; ++g) outPasses[g] = finiteOutput(gPassSum[g] / gWeight);
+  for (int g = 0; g < PASS_GROUPS; ++g) outPasses[g] = finitePass(gPassSum[g] / gWeight);
 #endif
 #if CRYPTOMATTE
   cryptoOutput(outCrypto[0], outCrypto[1], outCrypto[2]);

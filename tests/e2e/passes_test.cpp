@@ -240,6 +240,37 @@ TEST_F(PassesTest, CryptomatteCoverageIsTheWeightedShareOfTheSamples) {
               softOut);
 }
 
+// A float data pass keeps values a half colour output cannot hold: the colour's 65504 limit is
+// the colour's alone (the pass was once clamped to it).
+TEST_F(PassesTest, FloatPassesKeepValuesBeyondHalfsRange) {
+  constexpr float kScale = 1e6f;
+  for (int f = 1; f <= kFrames; ++f) {
+    const fs::path path = in_ / frameName("beauty", f);
+    Exr exr = readExr(path);
+    const std::size_t matte = std::size_t(exr.spec.channelindex("MatteRed.R"));
+    for (std::size_t p = 0; p < exr.spec.image_pixels(); ++p) {
+      exr.pixels[p * std::size_t(exr.spec.nchannels) + matte] *= kScale;
+    }
+    auto out = OIIO::ImageOutput::create(path.string());
+    ASSERT_TRUE(out && out->open(path.string(), exr.spec));
+    ASSERT_TRUE(out->write_image(OIIO::TypeFloat, exr.pixels.data()));
+    ASSERT_TRUE(out->close());
+  }
+  const ToolRun r = run({"--aov", "MatteRed.*=average"});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const Exr out = readExr(dir_ / "out" / frameName("r", 3));
+  ASSERT_EQ(out.spec.channelformat(out.spec.channelindex("R")), OIIO::TypeHalf);
+  ASSERT_EQ(out.spec.channelformat(out.spec.channelindex("MatteRed.R")), OIIO::TypeFloat);
+  // Finite, within the input's range and the reconstruction's ringing, and not cut at 65504.
+  float largest = 0.0f;
+  for (std::size_t p = 0; p < out.spec.image_pixels(); ++p) {
+    const float v = out.at(p, "MatteRed.R");
+    ASSERT_TRUE(std::isfinite(v) && std::abs(v) <= 1.01f * kScale) << "pixel " << p << ": " << v;
+    largest = std::max(largest, v);
+  }
+  EXPECT_GT(largest, 0.99f * kScale);
+}
+
 TEST_F(PassesTest, AovRulesChooseKindsAndDropChannels) {
   // Everything but the colour dropped: the colour alone, as before passes were resolved.
   ToolRun r = run({"--aov", "*=drop"}, "dropped");

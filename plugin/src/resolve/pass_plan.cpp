@@ -191,6 +191,9 @@ Image finishPasses(const std::vector<Image>& sums, const std::vector<Image>& cry
   const std::size_t pixels = std::size_t(width) * std::size_t(height);
   const std::size_t stride = plan.names.size();
   const std::size_t keptStride = std::size_t(plan.keptCount);
+  constexpr float kHalfMax = 65504.0f;
+  std::vector<bool> halfChannel(stride);
+  for (std::size_t c = 0; c < stride; ++c) halfChannel[c] = plan.formats[c] == OIIO::TypeHalf;
   for (std::size_t i = 0; i < pixels; ++i) {
     float* target = &out.pixels[i * stride];
     for (std::size_t c = 0; c < stride; ++c) {
@@ -208,7 +211,8 @@ Image finishPasses(const std::vector<Image>& sums, const std::vector<Image>& cry
         const float f = sums[std::size_t(fv / 4)].pixels[4 * i + std::size_t(fv % 4)];
         v = f != 0.0f ? v / f : 0.0f;
       }
-      target[c] = v;
+      // A half channel holds what half can: a quotient of sums may pass 65504 (negative factors).
+      target[c] = halfChannel[c] ? std::clamp(v, -kHalfMax, kHalfMax) : v;
     }
   }
   // Cryptomatte: the resolve's three rank layers into the set's layers (more layers are 0).
