@@ -145,6 +145,54 @@ TEST(WriteExrAtomic, FloatRoundTripKeepsValuesWindowsAndMetadata) {
   expectNoTemporaryFiles(folder);
 }
 
+// Extra channels keep their own types (a render's passes: light half, data float) and their
+// values, row by row across the bands the writer packs (256 rows), in a data window that does
+// not start at the origin, whichever type the colour is.
+TEST(WriteExrAtomic, ExtraChannelsKeepTheirTypesAndValuesAcrossBands) {
+  const std::string folder = scratchFolder();
+  constexpr int kWidth = 7, kHeight = 600;  // three bands, the last one partial
+  OIIO::ImageSpec templateSpec = makeSpec(kWidth, kHeight, {"R", "G", "B", "A"});
+  templateSpec.y = -20;
+  templateSpec.full_height = kHeight + 40;
+  const Image rgba =
+      makeRgba(kWidth, kHeight, [](int p, int c) { return 0.01f * float(p) + float(c); });
+  ExtraChannels extra;
+  extra.names = {"DiffDir.R", "IndexOB.X", "Position.X"};  // in the order EXR sorts them
+  extra.formats = {OIIO::TypeHalf, OIIO::TypeFloat, OIIO::TypeFloat};
+  extra.image = Image(kWidth, kHeight, 3);
+  for (std::size_t p = 0; p < std::size_t(kWidth) * kHeight; ++p) {
+    extra.image.pixels[3 * p] = 0.5f + 0.001f * float(p);
+    extra.image.pixels[3 * p + 1] = float(p % 5);
+    extra.image.pixels[3 * p + 2] = 1234.5678f + float(p);  // beyond what half holds exactly
+  }
+  for (const PixelType colourType : {PixelType::Half, PixelType::Float}) {
+    SCOPED_TRACE(colourType == PixelType::Half ? "half colour" : "float colour");
+    const std::string path = folder + (colourType == PixelType::Half ? "/h.exr" : "/f.exr");
+    writeExrAtomic(path, rgba, templateSpec, {colourType, "zip"}, extra);
+    OIIO::ImageSpec spec;
+    const std::vector<float> pixels = readImage(path, spec);
+    ASSERT_EQ(spec.channelnames, Names({"R", "G", "B", "A", "DiffDir.R", "IndexOB.X",
+                                        "Position.X"}));
+    const OIIO::TypeDesc colour = colourType == PixelType::Half ? OIIO::TypeHalf : OIIO::TypeFloat;
+    EXPECT_EQ(spec.channelformat(0), colour);
+    EXPECT_EQ(spec.channelformat(4), OIIO::TypeHalf);
+    EXPECT_EQ(spec.channelformat(5), OIIO::TypeFloat);
+    EXPECT_EQ(spec.y, -20);
+    for (std::size_t p = 0; p < std::size_t(kWidth) * kHeight; ++p) {
+      for (std::size_t c = 0; c < 4; ++c) {
+        const float wanted = rgba.pixels[4 * p + c];
+        ASSERT_EQ(pixels[7 * p + c],
+                  colourType == PixelType::Half ? roundedToHalf(wanted) : wanted)
+            << "pixel " << p << " channel " << c;
+      }
+      ASSERT_EQ(pixels[7 * p + 4], roundedToHalf(extra.image.pixels[3 * p])) << "pixel " << p;
+      ASSERT_EQ(pixels[7 * p + 5], extra.image.pixels[3 * p + 1]) << "pixel " << p;
+      ASSERT_EQ(pixels[7 * p + 6], extra.image.pixels[3 * p + 2]) << "pixel " << p;
+    }
+  }
+  expectNoTemporaryFiles(folder);
+}
+
 TEST(WriteExrAtomic, HalfRoundTripWithinHalfPrecision) {
   const std::string folder = scratchFolder();
   const std::string path = folder + "/out.exr";

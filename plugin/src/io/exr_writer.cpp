@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <system_error>
 
+#include <Imath/half.h>
 #include <OpenImageIO/filesystem.h>
 
 #include "io/temporary_file.h"
@@ -49,21 +51,55 @@ bool isNumber(const std::string& text) {
   return end == text.c_str() + text.size() && value >= 0.0;
 }
 
-// RGBA (widened to float) followed by the extra channels, interleaved per pixel as the writer
-// wants them.
-std::vector<float> interleave(const ImageView& rgba, const ExtraChannels& extra) {
-  const std::size_t pixelCount = std::size_t(rgba.width) * rgba.height;
-  std::vector<float> color(pixelCount * 4);
-  OIIO::convert_pixel_values(rgba.type == SampleType::Half ? OIIO::TypeHalf : OIIO::TypeFloat,
-                             rgba.data, OIIO::TypeFloat, color.data(), int(color.size()));
-  const int channels = 4 + extra.image.channels;
-  std::vector<float> pixels(pixelCount * channels);
-  for (std::size_t i = 0; i < pixelCount; ++i) {
-    std::copy_n(&color[i * 4], 4, &pixels[i * channels]);
-    std::copy_n(&extra.image.pixels[i * extra.image.channels], extra.image.channels,
-                &pixels[i * channels + 4]);
+// Rows packed and handed to the encoder at a time: a whole number of every scanline codec's
+// chunks (DWAB's are 256 rows), and small beside a frame (256 rows of 1920 pixels of a
+// render's 75 channels in their own types: about 70 MB less than the frame interleaved as float).
+constexpr int kBandRows = 256;
+
+// Stores `value` at `to` as the file's type of that channel.
+inline unsigned char* storeAs(OIIO::TypeDesc type, float value, unsigned char* to) {
+  if (type == OIIO::TypeHalf) {
+    const Imath::half h(value);
+    std::memcpy(to, &h, sizeof h);
+    return to + sizeof h;
   }
-  return pixels;
+  std::memcpy(to, &value, sizeof value);
+  return to + sizeof value;
+}
+
+// RGBA followed by the extra channels, each in the file's type of that channel, a band of rows
+// at a time (write_scanlines with TypeUnknown takes every channel in its own type): no copy of
+// the whole frame is made, and OIIO converts nothing.
+bool writeBands(OIIO::ImageOutput& output, const OIIO::ImageSpec& spec, const ImageView& rgba,
+                const ExtraChannels& extra) {
+  const std::size_t width = std::size_t(rgba.width);
+  std::size_t pixelBytes = 0;
+  for (int c = 0; c < spec.nchannels; ++c) pixelBytes += spec.channelformat(c).size();
+  std::vector<OIIO::TypeDesc> types(std::size_t(spec.nchannels));
+  for (int c = 0; c < spec.nchannels; ++c) types[std::size_t(c)] = spec.channelformat(c);
+  const auto* halfColour = static_cast<const Imath::half*>(rgba.data);
+  const auto* floatColour = static_cast<const float*>(rgba.data);
+  const std::size_t extraCount = std::size_t(extra.image.channels);
+  std::vector<unsigned char> band(std::size_t(kBandRows) * width * pixelBytes);
+  for (int y = 0; y < rgba.height; y += kBandRows) {
+    const int rows = std::min(kBandRows, rgba.height - y);
+    unsigned char* to = band.data();
+    for (std::size_t i = std::size_t(y) * width, end = i + std::size_t(rows) * width; i < end;
+         ++i) {
+      for (std::size_t c = 0; c < 4; ++c) {
+        const float v = rgba.type == SampleType::Half ? float(halfColour[4 * i + c])
+                                                      : floatColour[4 * i + c];
+        to = storeAs(types[c], v, to);
+      }
+      const float* more = &extra.image.pixels[i * extraCount];
+      for (std::size_t c = 0; c < extraCount; ++c) to = storeAs(types[4 + c], more[c], to);
+    }
+    if (!output.write_scanlines(spec.y + y, spec.y + y + rows, 0, OIIO::TypeUnknown,
+                                band.data())) {
+      return false;
+    }
+  }
+  return true;
 }
 
 // The compression attribute for OIIO: a bare zip or zips gets taa's default level.
@@ -203,13 +239,13 @@ void writeView(const std::string& path, const ImageView& rgba, const OIIO::Image
   }
   if (!output->open(temporary.path().string(), spec)) fail("cannot open for writing");
   // Without extra channels the samples go to OIIO as they are (converted only into a file of
-  // the other type); with them, everything is interleaved as float, which converts exactly.
+  // the other type); with them, each channel is packed in its own type, band by band.
   bool written = false;
   if (extra.names.empty()) {
     const OIIO::TypeDesc type = rgba.type == SampleType::Half ? OIIO::TypeHalf : OIIO::TypeFloat;
     written = output->write_image(type, rgba.data);
   } else {
-    written = output->write_image(OIIO::TypeFloat, interleave(rgba, extra).data());
+    written = writeBands(*output, spec, rgba, extra);
   }
   if (!written) fail("cannot write pixels");
   if (!output->close() || output->has_error()) fail("cannot finish writing");
