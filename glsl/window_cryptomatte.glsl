@@ -52,9 +52,9 @@ void cryptoSourceBegin() {
   gSourceCryptoTotal = 0.0;
 }
 
-// A sample's two IDs into the pixel's own slots (`toSource` false) or the source's.
-void cryptoAddSample(ivec2 texel, int layer, float weight, bool toSource) {
-  vec4 ranks = texelFetch(uCrypto, ivec3(texel, layer), 0);
+// A sample's two IDs (its `ranks` texel) into the pixel's own slots (`toSource` false) or the
+// source's.
+void cryptoAddRanks(vec4 ranks, float weight, bool toSource) {
   float w0 = weight * max(ranks.y, 0.0), w1 = weight * max(ranks.w, 0.0);
   if (toSource) {
     CRYPTO_ADD(gSourceCryptoId, gSourceCryptoWeight, floatBitsToUint(ranks.x), w0)
@@ -65,6 +65,10 @@ void cryptoAddSample(ivec2 texel, int layer, float weight, bool toSource) {
     CRYPTO_ADD(gCryptoId, gCryptoWeight, floatBitsToUint(ranks.z), w1)
     gCryptoTotal += w0 + w1;
   }
+}
+
+void cryptoAddSample(ivec2 texel, int layer, float weight, bool toSource) {
+  cryptoAddRanks(texelFetch(uCrypto, ivec3(texel, layer), 0), weight, toSource);
 }
 
 // The source weighed whole: its IDs join the pixel's with `scale` (agreement x frame weight).

@@ -98,8 +98,17 @@ int gSourcePassLayer;
 #include "window_cryptomatte.glsl"
 layout(location = 2) out vec4 outCrypto[3];  // rank layers 0..2: id, coverage, id, coverage
 #define ADD_CRYPTO(texel, layer, weight, toSource) cryptoAddSample(texel, layer, weight, toSource);
+// A sample into the pixel's slots with `weight` and the source's with `sourceWeight`, fetched
+// once.
+#define ADD_CRYPTO_TWICE(texel, layer, weight, sourceWeight)                    \
+  {                                                                             \
+    vec4 cryptoRanks = texelFetch(uCrypto, ivec3((texel), (layer)), 0);         \
+    cryptoAddRanks(cryptoRanks, (weight), false);                               \
+    cryptoAddRanks(cryptoRanks, (sourceWeight), true);                          \
+  }
 #else
 #define ADD_CRYPTO(texel, layer, weight, toSource)
+#define ADD_CRYPTO_TWICE(texel, layer, weight, sourceWeight)
 #endif
 #if PASS_GROUPS > 0
 uniform sampler2DArray uPasses[PASS_GROUPS];
@@ -110,8 +119,17 @@ vec4 gSourcePassSum[PASS_GROUPS];
   for (int g = 0; g < PASS_GROUPS; ++g) {                                    \
     sums[g] += (weight) * texelFetch(uPasses[g], ivec3((n), (layer)), 0);    \
   }
+// One sample into two sums: each group's texel fetched once (the fetches are most of a pass
+// draw's cost on llvmpipe).
+#define ADD_PASSES_TWICE(sums, weight, otherSums, otherWeight, n, layer)    \
+  for (int g = 0; g < PASS_GROUPS; ++g) {                                    \
+    vec4 passValue = texelFetch(uPasses[g], ivec3((n), (layer)), 0);        \
+    sums[g] += (weight) * passValue;                                         \
+    otherSums[g] += (otherWeight) * passValue;                               \
+  }
 #else
 #define ADD_PASSES(sums, n, layer, weight)
+#define ADD_PASSES_TWICE(sums, weight, otherSums, otherWeight, n, layer)
 #endif
 
 ivec2 gSize;
@@ -217,10 +235,9 @@ void addStaticSample(ivec2 corner, ivec2 step, bool skip, ivec2 taken, float fra
   gWeight += thinWeight;
   addSourceSample(entry.colour, thin ? 0.0 : kept);
   ivec2 texel = clamp(n, ivec2(0), gSize - 1);
-  ADD_PASSES(gPassSum, texel, gSourcePassLayer, thinWeight)
-  ADD_PASSES(gSourcePassSum, texel, gSourcePassLayer, thin ? 0.0 : kept)
-  ADD_CRYPTO(texel, gSourcePassLayer, thinWeight, false)
-  ADD_CRYPTO(texel, gSourcePassLayer, thin ? 0.0 : kept, true)
+  ADD_PASSES_TWICE(gPassSum, thinWeight, gSourcePassSum, thin ? 0.0 : kept, texel,
+                   gSourcePassLayer)
+  ADD_CRYPTO_TWICE(texel, gSourcePassLayer, thinWeight, thin ? 0.0 : kept)
 }
 
 // The static samples of the current source in the 2x2 block at `corner` (with `skip`, those
@@ -326,9 +343,9 @@ void main() {
       float w = wanted == n ? spatialWeight(vec2(n) + 0.5 + uTargetJitter - gPosition, uSigma)
                             : 0.0;
       float y = decisionLuma(colour);
-      ADD_PASSES(gPassSum, n, uTargetPassLayer, w)
+      ADD_PASSES_TWICE(gPassSum, w, filteredPasses, uReconstruction[3 * (dy + 1) + dx + 1], n,
+                       uTargetPassLayer)
       ADD_CRYPTO(n, uTargetPassLayer, w, false)
-      ADD_PASSES(filteredPasses, n, uTargetPassLayer, uReconstruction[3 * (dy + 1) + dx + 1])
       ownWeight += w;
       ownSum += w * colour;
       ownLumaSum += w * y;
