@@ -75,6 +75,12 @@ std::vector<std::string> commandLine(const py::object& color, const py::kwargs& 
       }
     } else if (key == "frames") {
       args.insert(args.end(), {flag, framesText(value)});
+    } else if (py::isinstance<py::list>(value) || py::isinstance<py::tuple>(value)) {
+      // A list repeats the option, as taatool's repeatable ones (--aov) are given.
+      for (const py::handle& item : value) {
+        args.insert(args.end(), {flag, isPathLike(item) ? fileSystemText(item)
+                                                        : py::str(item).cast<std::string>()});
+      }
     } else if (isPathLike(value)) {
       args.insert(args.end(), {flag, fileSystemText(value)});
     } else {
@@ -169,7 +175,8 @@ std::string resolveSequenceDoc() {
 resolve_sequence(color, **options): color is taatool's COLOR_PATTERN; every keyword is a
 taatool option with '_' for '-' (a flag as True), e.g. output="out.####.exr" (-o),
 frames="1-24" or [1, 2, 3], pixel_type="float" (-d), preset="cycles",
-camera_sidecar="camera.json", skip_missing=True, strict=True.
+camera_sidecar="camera.json", skip_missing=True, strict=True; a list repeats an option, e.g.
+aov=["DiffCol.*=copy", "*=drop"] (the render's passes: --aov).
 progress: a callable given each frame's dict after the frame is written.
 What changed the result silently is reported as RuntimeWarning with counts, as taatool's
 warnings (strict=True: an error instead). Ctrl-C stops between frames: frames written are
