@@ -125,6 +125,47 @@ TEST(ReadFrame, ChannelsComeInTheRequestedOrderNotTheFileOrder) {
   }
 }
 
+// The passes handed over band by band as they are decoded (PassBandReceiver: what the window
+// resolve packs from) are the channels a whole-frame read gives, every pixel exactly once, in
+// order, and `passes.image` stays empty; names and formats are set before any pixel.
+TEST(ReadFrame, PassesHandedOverInBandsEqualTheWholeFrameRead) {
+  const std::string folder = scratchFolder();
+  constexpr int kWidth = 5, kHeight = 150;  // three bands of 64 rows, the last partial
+  writeTestExr(folder + "/c.exr", {"A", "B", "DiffDir.R", "Emit.G", "G", "R", "Z"},
+               [](int p, int c) { return float(100 * c) + 0.25f * float(p); }, kWidth, kHeight);
+  AovLayout layout;
+  layout.color = {folder + "/c.exr", {"R", "G", "B", "A"}};
+  layout.passes = true;
+  const FrameData whole = readFrame(layout, 1);
+  ASSERT_EQ(whole.passes.names, Names({"Z", "DiffDir.R", "Emit.G"}));  // the order OIIO gives
+  ASSERT_EQ(whole.passes.image.channels, 3);
+
+  std::vector<float> banded;
+  std::size_t nextPixel = 0;
+  int calls = 0, bands = 0;
+  const FrameData data = readFrame(
+      layout, 1, {}, [&](const ExtraChannels& passes, int width, int height) -> PassBandSink {
+        ++calls;
+        EXPECT_EQ(passes.names, whole.passes.names);
+        EXPECT_EQ(passes.formats.size(), 3u);
+        EXPECT_EQ(width, kWidth);
+        EXPECT_EQ(height, kHeight);
+        return [&](std::size_t firstPixel, std::size_t count, const float* values) {
+          ++bands;
+          EXPECT_EQ(firstPixel, nextPixel);
+          nextPixel = firstPixel + count;
+          banded.insert(banded.end(), values, values + 3 * count);
+        };
+      });
+  EXPECT_EQ(calls, 1);
+  EXPECT_EQ(bands, 3);
+  EXPECT_TRUE(data.passes.image.empty());
+  EXPECT_EQ(data.passes.names, whole.passes.names);
+  EXPECT_EQ(banded, std::vector<float>(whole.passes.image.pixels.begin(),
+                                       whole.passes.image.pixels.end()));
+  EXPECT_EQ(data.color.toFloat().pixels, whole.color.toFloat().pixels);
+}
+
 TEST(ReadFrame, SeparateFilesPerAovWithEveryPlaceholderKind) {
   const std::string folder = scratchFolder();
   writeSeparateFiles(folder, 12);

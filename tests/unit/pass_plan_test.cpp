@@ -60,22 +60,31 @@ TEST(PassPlan, ProductsAreSummedAndDividedAndNormalsRenormalised) {
   EXPECT_EQ(plan.factor[0], 1);
   EXPECT_TRUE(plan.halfGroups[0]);  // half channels: half rings, products too
   EXPECT_TRUE(plan.halfGroups[1]);
-  EXPECT_FALSE(planPasses(names, std::vector<OIIO::TypeDesc>(names.size(), OIIO::TypeFloat), {})
-                   .halfGroups[0]);
+  const PassPlan floatPlan =
+      planPasses(names, std::vector<OIIO::TypeDesc>(names.size(), OIIO::TypeFloat), {});
+  EXPECT_FALSE(floatPlan.halfGroups[0]);
   EXPECT_EQ(plan.keptCount, 1);
 
   // Two samples, equal weights: light 0.2 x colour 0.5 and 0.6 x colour 1.0.
   Image a(1, 1, 6), b(1, 1, 6);
   a.pixels = {0.2f, 0.5f, 1.0f, 0.0f, 0.0f, 3.0f};
   b.pixels = {0.6f, 1.0f, 0.0f, 1.0f, 0.0f, 4.0f};
-  std::vector<std::vector<float>> ga, gb;
-  packPassGroups(a, plan, ga);
-  packPassGroups(b, plan, gb);
+  // Half channels are packed as half (the ring's type), products rounded once.
+  const std::vector<TypedImage> halves = packPasses(a, plan).groups;
+  ASSERT_EQ(halves.size(), 2u);
+  ASSERT_EQ(halves[0].type(), SampleType::Half);
+  EXPECT_EQ(halves[0].toFloat().pixels[0], float(Imath::half(0.2f * 0.5f)));
+  EXPECT_EQ(halves[1].toFloat().pixels[3], 0.0f);  // the unused slot
+  const PackedPasses pa = packPasses(a, floatPlan), pb = packPasses(b, floatPlan);
+  const std::vector<TypedImage>&ga = pa.groups, &gb = pb.groups;
+  ASSERT_EQ(ga[0].type(), SampleType::Float);
   std::vector<Image> sums(2, Image(1, 1, 4));
   for (int g = 0; g < 2; ++g) {
-    for (int c = 0; c < 4; ++c) sums[g].pixels[c] = 0.5f * (ga[g][c] + gb[g][c]);
+    for (int c = 0; c < 4; ++c) {
+      sums[g].pixels[c] = 0.5f * (ga[g].floats()->pixels[c] + gb[g].floats()->pixels[c]);
+    }
   }
-  const Image out = finishPasses(sums, {}, keptChannels(a, plan), plan);
+  const Image out = finishPasses(sums, {}, pa.kept, floatPlan);
   const float light = 0.5f * (0.2f * 0.5f + 0.6f * 1.0f);
   EXPECT_FLOAT_EQ(out.pixels[1], 0.75f);
   EXPECT_FLOAT_EQ(out.pixels[0] * out.pixels[1], light);

@@ -188,11 +188,12 @@ class PartReads {
  public:
   // `names` of part `part` of `file` into `out` (interleaved, `outChannels` a pixel, the first
   // names.size() written), as `type`. Missing channels are an error at once.
+  // With `band`, rows go to it as they are decoded instead (ChannelRequest::band).
   void add(OpenExr& file, int part, const std::vector<std::string>& names,
            const std::string& aovName, int frame, OIIO::TypeDesc type, void* out,
-           int outChannels) {
+           int outChannels, PassBandSink band = {}) {
     ChannelRequest request{aovName, channelIndices(file, part, names, aovName, frame), names,
-                           type, out, outChannels};
+                           type, out, outChannels, std::move(band)};
     for (Group& group : groups_) {
       if (group.file == &file && group.part == part) {
         group.requests.push_back(std::move(request));
@@ -417,7 +418,7 @@ void addPassthroughRead(PartReads& reads, OpenExr& file, int part,
 // Every channel of the color part but the color's own and those dropped, in file order, types
 // kept: the passes resolved beside the beauty (AovLayout::passes).
 void addPassesRead(PartReads& reads, OpenExr& file, int part, const AovLayout& layout, int frame,
-                   ExtraChannels& passes) {
+                   ExtraChannels& passes, const PassBandReceiver& passBands) {
   const std::vector<ChannelKindRule> rules = passRulesOf(layout);
   const OIIO::ImageSpec& spec = file.parts[std::size_t(part)];
   for (int c = 0; c < spec.nchannels; ++c) {
@@ -430,6 +431,11 @@ void addPassesRead(PartReads& reads, OpenExr& file, int part, const AovLayout& l
                                                                     : OIIO::TypeFloat);
   }
   if (passes.names.empty()) return;
+  if (passBands) {
+    reads.add(file, part, passes.names, "color", frame, OIIO::TypeFloat, nullptr,
+              int(passes.names.size()), passBands(passes, spec.width, spec.height));
+    return;
+  }
   passes.image = Image(spec.width, spec.height, int(passes.names.size()));
   reads.add(file, part, passes.names, "color", frame, OIIO::TypeFloat, passes.image.pixels.data(),
             passes.image.channels);
@@ -437,7 +443,8 @@ void addPassesRead(PartReads& reads, OpenExr& file, int part, const AovLayout& l
 
 }  // namespace
 
-FrameData readFrame(const AovLayout& layout, int frame, const CameraInputs& cameras) {
+FrameData readFrame(const AovLayout& layout, int frame, const CameraInputs& cameras,
+                    const PassBandReceiver& passBands) {
   if (layout.color.pattern.empty()) {
     throw Error("no color file pattern given", {"", frame, ""});
   }
@@ -462,7 +469,7 @@ FrameData readFrame(const AovLayout& layout, int frame, const CameraInputs& came
   data.window = rasterWindow(data.colorSpec);
   chooseCamera(data, cameras);
   if (layout.passes) {
-    addPassesRead(reads, colorFile, colorPart, layout, frame, data.passes);
+    addPassesRead(reads, colorFile, colorPart, layout, frame, data.passes, passBands);
   } else {
     addPassthroughRead(reads, colorFile, colorPart, layout.passthrough, frame, data.passthrough);
   }

@@ -3,6 +3,7 @@
 
 #include <OpenImageIO/imageio.h>
 
+#include <functional>
 #include <optional>
 #include <string>
 
@@ -46,6 +47,11 @@ struct FrameData {
   // With AovLayout::passes: every other channel of the color part that is not dropped, in file
   // order, types kept (the color's own channels are not among them).
   ExtraChannels passes;
+  // Set by the window resolve's reader (resolve/pass_plan): the summed passes packed for its
+  // ring and each Cryptomatte set's first rank layer; `passes.image` then holds only the
+  // channels taken from the frame as they are (keptChannels).
+  std::vector<TypedImage> passGroups;
+  std::vector<Image> passCryptomatte;
   // A multi-view job's other views of this frame (the job reads them: resolve/sequence_job),
   // each read with its view's layout; this one is the first view.
   std::vector<FrameData> otherViews;
@@ -80,7 +86,17 @@ struct CameraInputs {
 // available), a missing channel (listing those available), a wrong channel count for an AOV,
 // depth/motion windows that differ from color's (stating both), radial depth without a camera,
 // a data window beyond kMaxImageSide, a malformed camera note (channel "Note").
-FrameData readFrame(const AovLayout& layout, int frame, const CameraInputs& cameras = {});
+//
+// With `passBands` (AovLayout::passes): the pass channels are not read into `passes.image`
+// (which stays empty; names and formats are set); `passBands` is called once with them and the
+// image size before any pixel is read, and what it returns gets each band of rows as it is
+// decoded (ChannelRequest::band), so the frame's passes are never held whole as float.
+using PassBandSink =
+    std::function<void(std::size_t firstPixel, std::size_t count, const float* values)>;
+using PassBandReceiver =
+    std::function<PassBandSink(const ExtraChannels& passes, int width, int height)>;
+FrameData readFrame(const AovLayout& layout, int frame, const CameraInputs& cameras = {},
+                    const PassBandReceiver& passBands = {});
 
 
 }  // namespace taa::io

@@ -99,6 +99,7 @@ void readPartChannels(OIIO::ImageInput& input, const std::string& path, int fram
   const std::size_t width = std::size_t(spec.width);
   const int bandRows = rowsPerBand(spec);
   FrameVector<unsigned char> band;  // a frame-sized buffer: kept for the next frame
+  std::vector<float> bandValues;     // a band request's rows (ChannelRequest::band)
   for (const Pass& pass : passes) {
     int begin = spec.nchannels, end = 0;
     for (const ChannelRequest* request : pass.requests) {
@@ -145,13 +146,18 @@ void readPartChannels(OIIO::ImageInput& input, const std::string& path, int fram
       const std::size_t firstPixel = std::size_t(y - spec.y) * width;
       for (const ChannelRequest* request : pass.requests) {
         const std::size_t size = request->type.size();
-        auto* out = static_cast<unsigned char*>(request->out);
+        const std::size_t channels = std::size_t(request->outChannels);
+        // A band request gets its rows in a scratch buffer, then handed over.
+        if (request->band) bandValues.resize(count * channels);
+        auto* out = request->band ? reinterpret_cast<unsigned char*>(bandValues.data())
+                                  : static_cast<unsigned char*>(request->out) +
+                                        firstPixel * channels * size;
         for (std::size_t k = 0; k < request->channels.size(); ++k) {
           const std::size_t c = std::size_t(request->channels[k] - begin);
-          copyValues(band.data() + offset[c], pixelBytes, type[c],
-                     out + (firstPixel * std::size_t(request->outChannels) + k) * size,
-                     std::size_t(request->outChannels) * size, request->type, count);
+          copyValues(band.data() + offset[c], pixelBytes, type[c], out + k * size,
+                     channels * size, request->type, count);
         }
+        if (request->band) request->band(firstPixel, count, bandValues.data());
       }
     }
   }

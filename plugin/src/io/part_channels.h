@@ -3,6 +3,7 @@
 
 #include <OpenImageIO/imageio.h>
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -16,6 +17,10 @@ struct ChannelRequest {
   OIIO::TypeDesc type;         // TypeHalf or TypeFloat: the type `out` holds
   void* out = nullptr;         // width * height * outChannels values of `type`, row by row
   int outChannels = 0;         // values per pixel in `out`; the first channels.size() are set
+  // Instead of `out` (type float, outChannels = channels.size()): each band of rows as it is
+  // decoded, pixels [firstPixel, firstPixel + count) of the part (rows top first), the
+  // channels interleaved. The frame's channels are then never held whole.
+  std::function<void(std::size_t firstPixel, std::size_t count, const float* values)> band;
 };
 
 // Fills every request from part `part` of `input` (header `spec`). A multilayer file holds

@@ -125,62 +125,74 @@ PassPlan planPasses(const std::vector<std::string>& names,
   return plan;
 }
 
-void packPassGroups(const Image& passes, const PassPlan& plan,
-                    std::vector<std::vector<float>>& groups) {
+PackedPasses newPackedPasses(const PassPlan& plan, int width, int height) {
+  PackedPasses packed;
+  for (int g = 0; g < plan.groups(); ++g) {
+    packed.groups.emplace_back(width, height, 4,
+                               plan.halfGroups[std::size_t(g)] ? SampleType::Half
+                                                               : SampleType::Float);
+  }
+  for (std::size_t s = 0; s < plan.cryptomatte.size(); ++s) {
+    packed.cryptomatte.emplace_back(width, height, 4);
+  }
+  packed.kept = Image(width, height, plan.keptCount);
+  return packed;
+}
+
+void packPassRows(const float* values, std::size_t firstPixel, std::size_t count,
+                  const PassPlan& plan, PackedPasses& packed) {
+  const std::size_t stride = plan.names.size();
+  // Per summed value: where it goes (slot k of its group's first pixel, half or float).
+  const std::size_t summed = plan.valueChannel.size();
+  std::vector<Imath::half*> halfTarget(summed, nullptr);
+  std::vector<float*> floatTarget(summed, nullptr);
+  for (std::size_t v = 0; v < summed; ++v) {
+    TypedImage& group = packed.groups[v / 4];
+    if (group.type() == SampleType::Half) {
+      halfTarget[v] = group.halves()->pixels.data() + v % 4;
+    } else {
+      floatTarget[v] = group.floats()->pixels.data() + v % 4;
+    }
+  }
+  std::vector<std::size_t> keptFrom;  // kept channel k is channel keptFrom[k]
+  for (std::size_t c = 0; c < plan.kept.size(); ++c) {
+    if (plan.kept[c] >= 0) keptFrom.push_back(c);
+  }
+  const std::size_t keptStride = keptFrom.size();
+  // Pixel by pixel, each pixel's channels once: a pixel's channels are neighbours in memory,
+  // a channel's are not. Unused group slots stay 0, as the images were made.
+  for (std::size_t n = 0; n < count; ++n) {
+    const std::size_t i = firstPixel + n;
+    const float* row = values + n * stride;
+    for (std::size_t v = 0; v < summed; ++v) {
+      const int factor = plan.valueFactor[v];
+      const float value = row[plan.valueChannel[v]];
+      const float product = factor < 0 ? value : value * row[factor];
+      if (halfTarget[v]) {
+        halfTarget[v][4 * i] = Imath::half(product);
+      } else {
+        floatTarget[v][4 * i] = product;
+      }
+    }
+    for (std::size_t s = 0; s < plan.cryptomatte.size(); ++s) {
+      const std::array<int, 4>& first = plan.cryptomatte[s].layers.front();
+      float* target = &packed.cryptomatte[s].pixels[4 * i];
+      for (std::size_t k = 0; k < 4; ++k) target[k] = row[first[k]];
+    }
+    float* kept = keptStride ? &packed.kept.pixels[i * keptStride] : nullptr;
+    for (std::size_t k = 0; k < keptStride; ++k) kept[k] = row[keptFrom[k]];
+  }
+}
+
+PackedPasses packPasses(const Image& passes, const PassPlan& plan) {
   if (passes.channels != int(plan.names.size())) {
     throw Error("the frame has " + std::to_string(passes.channels) +
                 " pass channels where the first frame had " + std::to_string(plan.names.size()));
   }
-  const std::size_t pixels = std::size_t(passes.width) * std::size_t(passes.height);
-  const std::size_t stride = std::size_t(passes.channels);
-  groups.resize(std::size_t(plan.groups()));
-  for (std::vector<float>& group : groups) group.resize(pixels * 4, 0.0f);  // unused slots stay 0
-  const std::size_t values = plan.valueChannel.size();
-  std::vector<float*> targets;
-  for (std::size_t v = 0; v < values; ++v) targets.push_back(groups[v / 4].data() + v % 4);
-  // Pixel by pixel: a pixel's channels are neighbours in memory, a channel's are not.
-  for (std::size_t i = 0; i < pixels; ++i) {
-    const float* row = &passes.pixels[i * stride];
-    for (std::size_t v = 0; v < values; ++v) {
-      const int factor = plan.valueFactor[v];
-      const float value = row[plan.valueChannel[v]];
-      targets[v][4 * i] = factor < 0 ? value : value * row[factor];
-    }
-  }
-}
-
-void packCryptomatte(const Image& passes, const PassPlan& plan,
-                     std::vector<std::vector<float>>& layers) {
-  const std::size_t pixels = std::size_t(passes.width) * std::size_t(passes.height);
-  const std::size_t stride = std::size_t(passes.channels);
-  layers.resize(plan.cryptomatte.size());
-  for (std::size_t s = 0; s < plan.cryptomatte.size(); ++s) {
-    const std::array<int, 4>& first = plan.cryptomatte[s].layers.front();
-    std::vector<float>& layer = layers[s];
-    layer.resize(pixels * 4);
-    for (std::size_t i = 0; i < pixels; ++i) {
-      for (std::size_t k = 0; k < 4; ++k) {
-        layer[4 * i + k] = passes.pixels[i * stride + std::size_t(first[k])];
-      }
-    }
-  }
-}
-
-Image keptChannels(const Image& passes, const PassPlan& plan) {
-  Image kept(passes.width, passes.height, plan.keptCount);
-  const std::size_t pixels = std::size_t(passes.width) * std::size_t(passes.height);
-  const std::size_t in = std::size_t(passes.channels), out = std::size_t(plan.keptCount);
-  std::vector<std::size_t> from;  // kept channel k is input channel from[k]
-  for (std::size_t c = 0; c < plan.kept.size(); ++c) {
-    if (plan.kept[c] >= 0) from.push_back(c);
-  }
-  // Pixel by pixel: a pixel's channels are neighbours in memory, a channel's are not.
-  for (std::size_t i = 0; i < pixels; ++i) {
-    const float* source = &passes.pixels[i * in];
-    float* target = &kept.pixels[i * out];
-    for (std::size_t k = 0; k < out; ++k) target[k] = source[from[k]];
-  }
-  return kept;
+  PackedPasses packed = newPackedPasses(plan, passes.width, passes.height);
+  packPassRows(passes.pixels.data(), 0, std::size_t(passes.width) * std::size_t(passes.height),
+               plan, packed);
+  return packed;
 }
 
 Image finishPasses(const std::vector<Image>& sums, const std::vector<Image>& cryptomatte,

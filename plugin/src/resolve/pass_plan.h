@@ -56,23 +56,34 @@ PassPlan planPasses(const std::vector<std::string>& names,
                     const std::vector<OIIO::TypeDesc>& formats,
                     const std::vector<io::ChannelKindRule>& rules);
 
-// Group g's values of every pixel, RGBA interleaved (unused slots 0), into `groups[g]`: what
-// the ring holds. The buffers are reused from frame to frame (a render's every pass is about
-// 400 MB of them at 1080p, which fresh allocations would fault in every frame).
-void packPassGroups(const Image& passes, const PassPlan& plan,
-                    std::vector<std::vector<float>>& groups);
+// A frame's passes as the window resolve keeps them until its turn:
+// - groups: each group's values, RGBA interleaved (unused slots 0), half where the plan's group
+//   is (PassPlan::halfGroups: the ring's own type, uploaded as it is);
+// - cryptomatte: each set's first rank layer, RGBA;
+// - kept: the channels taken from frame t as they are (PassPlan::kept), for its output.
+// About half the size of the frame's pass channels as float.
+struct PackedPasses {
+  std::vector<TypedImage> groups;
+  std::vector<Image> cryptomatte;
+  Image kept;
+};
 
-// Each Cryptomatte set's first rank layer, RGBA interleaved, into `layers[set]` (reused).
-void packCryptomatte(const Image& passes, const PassPlan& plan,
-                     std::vector<std::vector<float>>& layers);
+// Empty packed passes of a `width` x `height` frame under `plan`, to be filled by packPassRows.
+PackedPasses newPackedPasses(const PassPlan& plan, int width, int height);
 
-// Frame t's channels that are not summed (PassPlan::kept), from its pass channels as read: what
-// the output takes from t itself, kept while the frame waits for its turn.
-Image keptChannels(const Image& passes, const PassPlan& plan);
+// Pixels [firstPixel, firstPixel + count) of the frame (rows top first) from `values`, their
+// pass channels as read (plan.names' order, interleaved, float): the reader hands each band of
+// rows over as it is decoded (io::PassBandReceiver), so the frame's channels are never held
+// whole.
+void packPassRows(const float* values, std::size_t firstPixel, std::size_t count,
+                  const PassPlan& plan, PackedPasses& packed);
+
+// A whole frame's pass channels (as read, plan.names' order) packed.
+PackedPasses packPasses(const Image& passes, const PassPlan& plan);
 
 // The resolved channels from the gather's sums (one RGBA image per group), its Cryptomatte
 // ranks (three RGBA images per set: id, coverage, id, coverage) and frame t's kept channels
-// (keptChannels): an image with `plan.names`' channels in their order.
+// (PackedPasses::kept): an image with `plan.names`' channels in their order.
 Image finishPasses(const std::vector<Image>& sums, const std::vector<Image>& cryptomatte,
                    const Image& kept, const PassPlan& plan);
 

@@ -25,11 +25,11 @@ struct ResolveInput {
   const FrameCamera* camera = nullptr;  // optional: enables camera motion with the previous one
   RasterWindow window;            // where the pixels sit in the display window (for the camera)
   NdcConvention ndc = NdcConvention::ZeroOneYDown;
-  // Window mode: the frame's pass values, RGBA float per group (resolve/pass_plan), as many as
-  // WindowResolver::setPassGroups said.
-  std::vector<const float*> passGroups;
+  // Window mode: the frame's pass values, RGBA half or float per group (resolve/pass_plan),
+  // as many as WindowResolver::setPasses said.
+  std::vector<ImageView> passGroups;
   // And each Cryptomatte set's first rank layer, RGBA float (resolve/pass_plan).
-  std::vector<const float*> cryptomatte;
+  std::vector<ImageView> cryptomatte;
 };
 
 // Per-pixel diagnostics of the last frame (setDebugOutput): RGBA = (weight given to history,

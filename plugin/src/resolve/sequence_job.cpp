@@ -335,7 +335,28 @@ struct JobRun {
   }
 
   io::FrameData readView(const io::AovLayout& layout, int frame) const {
-    io::FrameData data = io::readFrame(layout, frame, cameras);
+    // The window resolve packs the passes for its ring as they are decoded, band by band, on
+    // the reader's thread: the frame's pass channels are never held whole as float (590 MB
+    // for a 1080p Cycles render with every pass), and the frame waits for the ring holding
+    // its packed values (about half that).
+    PassPlan plan;
+    PackedPasses packed;
+    io::PassBandReceiver passBands;
+    if (job.resolve.mode == ResolveMode::Window) {
+      passBands = [&](const io::ExtraChannels& passes, int width, int height) {
+        plan = planPasses(passes.names, passes.formats, io::passRulesOf(layout));
+        packed = newPackedPasses(plan, width, height);
+        return [&](std::size_t firstPixel, std::size_t count, const float* values) {
+          packPassRows(values, firstPixel, count, plan, packed);
+        };
+      };
+    }
+    io::FrameData data = io::readFrame(layout, frame, cameras, passBands);
+    if (!data.passes.names.empty() && passBands) {
+      data.passGroups = std::move(packed.groups);
+      data.passCryptomatte = std::move(packed.cryptomatte);
+      data.passes.image = std::move(packed.kept);
+    }
     if (data.camera) {
       const glm::vec2 jitter = jitterOf(job, data, sidecar ? &*sidecar : nullptr);
       if (auto corrected = withoutJitterInProjection(*data.camera, jitter, data.window, data.ndc)) {
@@ -571,8 +592,6 @@ void runWindow(JobRun& run, gl::Context& context) {
   // The passes (issue 21): planned from the first frame read, every frame the same channels.
   std::optional<PassPlan> passPlan;
   std::string passFile;  // the file the plan came from, for the message when one differs
-  std::vector<std::vector<float>> passGroups;  // a frame's packed pass values, reused
-  std::vector<std::vector<float>> cryptomatte;  // and its Cryptomatte sets' first layers
   std::vector<int> inRing;
 
   for (int index = 0; index < int(outputs.size()); ++index) {
@@ -613,16 +632,11 @@ void runWindow(JobRun& run, gl::Context& context) {
                         " (every frame of a run must hold the same channels)",
                     {data.colorPath, f, ""});
       }
-      if (!passPlan->empty()) {
-        packPassGroups(data.passes.image, *passPlan, passGroups);
-        packCryptomatte(data.passes.image, *passPlan, cryptomatte);
-        data.passes.image = keptChannels(data.passes.image, *passPlan);
-      }
       for (std::size_t v = 0; v < resolvers.size(); ++v) {
         ResolveInput input = run.inputOf(JobRun::view(data, v), v == 0);
         if (v == 0) {
-          for (const std::vector<float>& group : passGroups) input.passGroups.push_back(group.data());
-          for (const std::vector<float>& set : cryptomatte) input.cryptomatte.push_back(set.data());
+          for (const TypedImage& group : data.passGroups) input.passGroups.emplace_back(&group);
+          for (const Image& set : data.passCryptomatte) input.cryptomatte.emplace_back(&set);
         }
         try {
           resolvers[v]->addFrame(f, input);
@@ -632,7 +646,9 @@ void runWindow(JobRun& run, gl::Context& context) {
       }
       inRing.push_back(f);
       if (plan.windows.count(f)) {
-        // Uploaded: only the headers and pass-through are kept.
+        // Uploaded: only the headers, pass-through and kept pass channels stay.
+        data.passGroups.clear();
+        data.passCryptomatte.clear();
         data.color = TypedImage();
         data.depth = Image();
         data.motion = Image();

@@ -403,6 +403,15 @@ struct WindowResolver::Impl {
                       std::to_string(cryptomatteSets),
                   {"", frame});
     }
+    std::vector<ImageView> passImages = input.passGroups;
+    passImages.insert(passImages.end(), input.cryptomatte.begin(), input.cryptomatte.end());
+    for (const ImageView& pass : passImages) {
+      if (!pass || pass.channels != 4 || pass.width != color.width ||
+          pass.height != color.height) {
+        throw Error("window resolve: a pass group is not four channels of the colour's size",
+                    {"", frame});
+      }
+    }
     if (freeLayers.empty()) {
       throw Error("window resolve: the ring of " + std::to_string(capacity()) +
                   " frames is full", {"", frame});
@@ -420,10 +429,12 @@ struct WindowResolver::Impl {
       slot.passLayer = freePassLayers.back();
       freePassLayers.pop_back();
       for (std::size_t g = 0; g < passRings.size(); ++g) {
-        passRings[g].upload(slot.passLayer, input.passGroups[g], 4, GL_FLOAT);
+        const ImageView& group = input.passGroups[g];
+        passRings[g].upload(slot.passLayer, group.data, 4,
+                            group.type == SampleType::Half ? GL_HALF_FLOAT : GL_FLOAT);
       }
       for (std::size_t s = 0; s < cryptomatteRings.size(); ++s) {
-        cryptomatteRings[s].upload(slot.passLayer, input.cryptomatte[s], 4, GL_FLOAT);
+        cryptomatteRings[s].upload(slot.passLayer, input.cryptomatte[s].data, 4, GL_FLOAT);
       }
       gl::checkError(gl, "window pass upload");
     }
@@ -612,18 +623,23 @@ struct WindowResolver::Impl {
         p.set("uCrypto", firstPassUnit());
       });
     }
-    lastPasses.assign(std::size_t(groups), Image());
+    // Read back into the last frame's images where they fit: a render's every pass is 500 MB
+    // of them at 1080p, which fresh images would clear and fault in every frame.
+    const auto fit = [&](std::vector<Image>& images, int count) {
+      images.resize(std::size_t(count));
+      for (Image& image : images) {
+        if (image.width != width || image.height != height) image = Image(width, height, 4);
+      }
+    };
+    fit(lastPasses, groups);
     for (int g = 0; g < groups; ++g) {
-      Image sums(width, height, 4);
-      passTargets[std::size_t(g / kPassGroupsPerDraw)].readRGBA(sums.pixels.data(), GL_FLOAT,
-                                                                 2 + g % kPassGroupsPerDraw);
-      lastPasses[std::size_t(g)] = std::move(sums);
+      passTargets[std::size_t(g / kPassGroupsPerDraw)].readRGBA(
+          lastPasses[std::size_t(g)].pixels.data(), GL_FLOAT, 2 + g % kPassGroupsPerDraw);
     }
-    lastCryptomatte.assign(std::size_t(3 * cryptomatteSets), Image());
+    fit(lastCryptomatte, 3 * cryptomatteSets);
     for (int i = 0; i < 3 * cryptomatteSets; ++i) {
-      Image ranks(width, height, 4);
-      cryptomatteTargets[std::size_t(i / 3)].readRGBA(ranks.pixels.data(), GL_FLOAT, 2 + i % 3);
-      lastCryptomatte[std::size_t(i)] = std::move(ranks);
+      cryptomatteTargets[std::size_t(i / 3)].readRGBA(lastCryptomatte[std::size_t(i)].pixels.data(),
+                                                      GL_FLOAT, 2 + i % 3);
     }
 
     if (debugOutput) {
