@@ -111,12 +111,13 @@ struct WindowResolver::Impl {
   std::vector<bool> passHalf;
   std::vector<gl::TextureArray> passRings;
   std::vector<int> freePassLayers;
+  // The sums of one draw (its groups', or a Cryptomatte set's three rank layers), read back
+  // before the next draw writes them: 6 textures where a render's every pass has 15 sums.
   std::vector<gl::Texture> passOutputs;
   std::vector<gl::Framebuffer> passTargets;  // per draw: output, debug, its groups' sums
   std::vector<Image> lastPasses;
   int cryptomatteSets = 0;
   std::vector<gl::TextureArray> cryptomatteRings;  // RGBA32F, at the frames' pass layers
-  std::vector<gl::Texture> cryptomatteOutputs;      // three a set
   std::vector<gl::Framebuffer> cryptomatteTargets;  // a set's draw: output, -, its three ranks
   std::vector<Image> lastCryptomatte;
 
@@ -220,17 +221,17 @@ struct WindowResolver::Impl {
     passTargets.clear();
     freePassLayers.clear();
     cryptomatteRings.clear();
-    cryptomatteOutputs.clear();
     cryptomatteTargets.clear();
     if (!hasPasses() || width == 0) return;
     for (bool half : passHalf) {
       passRings.emplace_back(gl, width, height, capacity(), half ? GL_RGBA16F : GL_RGBA32F);
-      passOutputs.emplace_back(gl, width, height, GL_RGBA32F);
     }
     for (int s = 0; s < cryptomatteSets; ++s) {
       cryptomatteRings.emplace_back(gl, width, height, capacity(), GL_RGBA32F);
-      for (int rank = 0; rank < 3; ++rank) cryptomatteOutputs.emplace_back(gl, width, height, GL_RGBA32F);
     }
+    const int outputs = std::max(std::min(int(passHalf.size()), kPassGroupsPerDraw),
+                                 cryptomatteSets > 0 ? 3 : 0);
+    for (int o = 0; o < outputs; ++o) passOutputs.emplace_back(gl, width, height, GL_RGBA32F);
     for (int layer = capacity() - 1; layer >= 0; --layer) freePassLayers.push_back(layer);
   }
 
@@ -562,7 +563,7 @@ struct WindowResolver::Impl {
         std::vector<gl::Attachment> attachments{&output, debugOutput ? &debug : nullptr};
         for (int g = d * kPassGroupsPerDraw; g < std::min(groups, (d + 1) * kPassGroupsPerDraw);
              ++g) {
-          attachments.emplace_back(&passOutputs[std::size_t(g)]);
+          attachments.emplace_back(&passOutputs[std::size_t(g - d * kPassGroupsPerDraw)]);
         }
         passTargets.emplace_back(gl, attachments);
       }
@@ -570,7 +571,7 @@ struct WindowResolver::Impl {
       for (int set = 0; set < cryptomatteSets; ++set) {
         std::vector<gl::Attachment> attachments{&output, nullptr};
         for (int rank = 0; rank < 3; ++rank) {
-          attachments.emplace_back(&cryptomatteOutputs[std::size_t(3 * set + rank)]);
+          attachments.emplace_back(&passOutputs[std::size_t(rank)]);
         }
         cryptomatteTargets.emplace_back(gl, attachments);
       }
@@ -604,6 +605,16 @@ struct WindowResolver::Impl {
       triangle.draw();
       gl::checkError(gl, "window gather pass");
     };
+    // Read back into the last frame's images where they fit: a render's every pass is 500 MB
+    // of them at 1080p, which fresh images would clear and fault in every frame.
+    const auto fit = [&](std::vector<Image>& images, int count) {
+      images.resize(std::size_t(count));
+      for (Image& image : images) {
+        if (image.width != width || image.height != height) image = Image(width, height, 4);
+      }
+    };
+    fit(lastPasses, groups);
+    fit(lastCryptomatte, 3 * cryptomatteSets);
     if (groups == 0) drawGather(0, gatherTarget, [](const gl::Program&) {});
     for (int d = 0; d < groupDraws; ++d) {
       const int firstGroup = d * kPassGroupsPerDraw;
@@ -616,30 +627,20 @@ struct WindowResolver::Impl {
         }
         p.setIntArray("uPasses", units.data(), drawGroups);
       });
+      for (int g = 0; g < drawGroups; ++g) {
+        passTargets[std::size_t(d)].readRGBA(lastPasses[std::size_t(firstGroup + g)].pixels.data(),
+                                             GL_FLOAT, 2 + g);
+      }
     }
     for (int set = 0; set < cryptomatteSets; ++set) {
       drawGather(-1, cryptomatteTargets[std::size_t(set)], [&](const gl::Program& p) {
         cryptomatteRings[std::size_t(set)].bind(firstPassUnit());
         p.set("uCrypto", firstPassUnit());
       });
-    }
-    // Read back into the last frame's images where they fit: a render's every pass is 500 MB
-    // of them at 1080p, which fresh images would clear and fault in every frame.
-    const auto fit = [&](std::vector<Image>& images, int count) {
-      images.resize(std::size_t(count));
-      for (Image& image : images) {
-        if (image.width != width || image.height != height) image = Image(width, height, 4);
+      for (int rank = 0; rank < 3; ++rank) {
+        cryptomatteTargets[std::size_t(set)].readRGBA(
+            lastCryptomatte[std::size_t(3 * set + rank)].pixels.data(), GL_FLOAT, 2 + rank);
       }
-    };
-    fit(lastPasses, groups);
-    for (int g = 0; g < groups; ++g) {
-      passTargets[std::size_t(g / kPassGroupsPerDraw)].readRGBA(
-          lastPasses[std::size_t(g)].pixels.data(), GL_FLOAT, 2 + g % kPassGroupsPerDraw);
-    }
-    fit(lastCryptomatte, 3 * cryptomatteSets);
-    for (int i = 0; i < 3 * cryptomatteSets; ++i) {
-      cryptomatteTargets[std::size_t(i / 3)].readRGBA(lastCryptomatte[std::size_t(i)].pixels.data(),
-                                                      GL_FLOAT, 2 + i % 3);
     }
 
     if (debugOutput) {
