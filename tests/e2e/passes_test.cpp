@@ -149,8 +149,13 @@ class PassesTest : public ::testing::Test {
 TEST_F(PassesTest, EveryPassIsResolvedAndTheCompIdentityHolds) {
   const ToolRun r = run({"-v"});
   ASSERT_EQ(r.exitCode, 0) << r.err;
-  EXPECT_NE(r.err.find("DiffDir.R light"), std::string::npos) << r.err;
-  EXPECT_NE(r.err.find("IndexOB.X nearest"), std::string::npos) << r.err;
+  // -v: a line a kind, its channels in file order.
+  EXPECT_NE(r.err.find("passes resolved beside the colour, light: DiffDir.R, DiffDir.G"),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("passes resolved beside the colour, nearest: IndexOB.X"),
+            std::string::npos)
+      << r.err;
   const int f = 3;
   const Exr in = readExr(in_ / frameName("beauty", f));
   const Exr out = readExr(dir_ / "out" / frameName("r", f));

@@ -10,6 +10,7 @@
 #include <cstring>
 #include <deque>
 #include <filesystem>
+#include <functional>
 #include <limits>
 #include <memory>
 #include <system_error>
@@ -393,43 +394,49 @@ PixelRay pixelRayFor(const FrameData& data, const DepthConvention& convention,
               {depthPath, data.frame, ""});
 }
 
-// Channels of the color part whose names match any pattern, in file order, types kept, to be
-// filled by `reads`.
-void addPassthroughRead(PartReads& reads, OpenExr& file, int part,
-                        const std::vector<std::string>& patterns, int frame, ExtraChannels& extra) {
-  if (patterns.empty()) return;
-  const OIIO::ImageSpec& spec = file.parts[std::size_t(part)];
+// The channels of the color part that `wanted` picks, in file order, with their types (half
+// stays half, anything else is read as float): the extra channels a frame carries to its
+// output.
+ExtraChannels pickedChannels(const OIIO::ImageSpec& spec,
+                             const std::function<bool(const std::string&)>& wanted) {
+  ExtraChannels extra;
   for (int c = 0; c < spec.nchannels; ++c) {
     const std::string& name = spec.channelnames[std::size_t(c)];
-    const bool matches = std::any_of(patterns.begin(), patterns.end(), [&](const std::string& p) {
-      return ::fnmatch(p.c_str(), name.c_str(), 0) == 0;
-    });
-    if (!matches) continue;
+    if (!wanted(name)) continue;
     extra.names.push_back(name);
     extra.formats.push_back(spec.channelformat(c) == OIIO::TypeHalf ? OIIO::TypeHalf
                                                                    : OIIO::TypeFloat);
   }
+  return extra;
+}
+
+// Channels of the color part whose names match any pattern, to be filled by `reads`.
+void addPassthroughRead(PartReads& reads, OpenExr& file, int part,
+                        const std::vector<std::string>& patterns, int frame, ExtraChannels& extra) {
+  if (patterns.empty()) return;
+  const OIIO::ImageSpec& spec = file.parts[std::size_t(part)];
+  extra = pickedChannels(spec, [&](const std::string& name) {
+    return std::any_of(patterns.begin(), patterns.end(), [&](const std::string& p) {
+      return ::fnmatch(p.c_str(), name.c_str(), 0) == 0;
+    });
+  });
   if (extra.names.empty()) return;
   extra.image = Image(spec.width, spec.height, int(extra.names.size()));
   reads.add(file, part, extra.names, "color", frame, OIIO::TypeFloat, extra.image.pixels.data(),
             extra.image.channels);
 }
 
-// Every channel of the color part but the color's own and those dropped, in file order, types
-// kept: the passes resolved beside the beauty (AovLayout::passes).
+// Every channel of the color part but the color's own and those dropped: the passes resolved
+// beside the beauty (AovLayout::passes), read whole or handed to `passBands` band by band.
 void addPassesRead(PartReads& reads, OpenExr& file, int part, const AovLayout& layout, int frame,
                    ExtraChannels& passes, const PassBandReceiver& passBands) {
   const std::vector<ChannelKindRule> rules = passRulesOf(layout);
   const OIIO::ImageSpec& spec = file.parts[std::size_t(part)];
-  for (int c = 0; c < spec.nchannels; ++c) {
-    const std::string& name = spec.channelnames[std::size_t(c)];
-    const auto& color = layout.color.channels;
-    if (std::find(color.begin(), color.end(), name) != color.end()) continue;
-    if (channelKind(name, rules) == ChannelKind::Drop) continue;
-    passes.names.push_back(name);
-    passes.formats.push_back(spec.channelformat(c) == OIIO::TypeHalf ? OIIO::TypeHalf
-                                                                    : OIIO::TypeFloat);
-  }
+  const auto& color = layout.color.channels;
+  passes = pickedChannels(spec, [&](const std::string& name) {
+    return std::find(color.begin(), color.end(), name) == color.end() &&
+           channelKind(name, rules) != ChannelKind::Drop;
+  });
   if (passes.names.empty()) return;
   if (passBands) {
     reads.add(file, part, passes.names, "color", frame, OIIO::TypeFloat, nullptr,

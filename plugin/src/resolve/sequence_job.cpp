@@ -621,11 +621,15 @@ void runWindow(JobRun& run, gl::Context& context) {
         passFile = data.colorPath;
         resolver.setPasses(passPlan->halfGroups, int(passPlan->cryptomatte.size()));
         if (run.callbacks.detail && !passPlan->empty()) {
-          std::string kinds;
+          // One line a kind, the channels in file order: a render's every pass is 70 names.
+          std::map<std::string, std::string> byKind;
           for (std::size_t c = 0; c < passPlan->names.size(); ++c) {
-            kinds += (c ? ", " : "") + passPlan->names[c] + " " + io::kindName(passPlan->kinds[c]);
+            std::string& names = byKind[io::kindName(passPlan->kinds[c])];
+            names += (names.empty() ? "" : ", ") + passPlan->names[c];
           }
-          run.callbacks.detail("passes resolved beside the colour: " + kinds);
+          for (const auto& [kind, names] : byKind) {
+            run.callbacks.detail("passes resolved beside the colour, " + kind + ": " + names);
+          }
         }
       } else if (data.passes.names != passPlan->names) {
         throw Error("the frame's pass channels differ from those of " + passFile +
