@@ -22,29 +22,10 @@ namespace {
 
 namespace fs = std::filesystem;
 
+using test::Exr;
+using test::frameName;
+using test::readExr;
 using test::ToolRun;
-
-std::string frameName(const std::string& stem, int frame) {
-  char name[64];
-  std::snprintf(name, sizeof name, "%s.%04d.exr", stem.c_str(), frame);
-  return name;
-}
-
-struct Exr {
-  OIIO::ImageSpec spec;
-  std::vector<float> pixels;  // all channels, float
-};
-
-Exr readExr(const fs::path& path) {
-  Exr exr;
-  auto in = OIIO::ImageInput::open(path.string());
-  EXPECT_TRUE(in) << path << ": " << OIIO::geterror();
-  if (!in) return exr;
-  exr.spec = in->spec();
-  exr.pixels.resize(exr.spec.image_pixels() * exr.spec.nchannels);
-  EXPECT_TRUE(in->read_image(0, 0, 0, exr.spec.nchannels, OIIO::TypeFloat, exr.pixels.data()));
-  return exr;
-}
 
 void writeExr(const fs::path& path, const Exr& exr) {
   auto out = OIIO::ImageOutput::create("openexr");

@@ -20,6 +20,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
+using test::Exr;
+using test::frameName;
+using test::readExr;
 using test::ToolRun;
 
 constexpr int kWidth = 64, kHeight = 40, kFrames = 6;
@@ -27,31 +30,6 @@ constexpr int kWidth = 64, kHeight = 40, kFrames = 6;
 // Two Cryptomatte IDs (hashes stored as floats): the object where red outweighs green, and the
 // rest.
 constexpr float kIdRed = 1.5e-3f, kIdOther = -7.25e10f;
-
-struct Exr {
-  OIIO::ImageSpec spec;
-  std::vector<float> pixels;
-  float at(std::size_t pixel, const std::string& channel) const {
-    return pixels[pixel * std::size_t(spec.nchannels) + std::size_t(spec.channelindex(channel))];
-  }
-};
-
-Exr readExr(const fs::path& path) {
-  Exr exr;
-  auto in = OIIO::ImageInput::open(path.string());
-  EXPECT_TRUE(in) << path;
-  if (!in) return exr;
-  exr.spec = in->spec();
-  exr.pixels.resize(exr.spec.image_pixels() * std::size_t(exr.spec.nchannels));
-  EXPECT_TRUE(in->read_image(0, 0, 0, exr.spec.nchannels, OIIO::TypeFloat, exr.pixels.data()));
-  return exr;
-}
-
-std::string frameName(const std::string& stem, int frame) {
-  char name[64];
-  std::snprintf(name, sizeof name, "%s.%04d.exr", stem.c_str(), frame);
-  return name;
-}
 
 const std::vector<std::string> kLightPasses = {"DiffDir", "GlossDir", "Emit"};
 const std::vector<std::string> kRgb = {"R", "G", "B"};

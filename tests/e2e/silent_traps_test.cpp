@@ -20,6 +20,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
+using test::frameName;
 using test::ToolRun;
 
 constexpr int kFrames = 5;
@@ -42,12 +43,6 @@ float maxDifference(const std::vector<float>& a, const std::vector<float>& b) {
     worst = std::max(worst, std::abs(a[i] - b[i]));
   }
   return worst;
-}
-
-std::string frameName(const std::string& stem, int frame) {
-  char name[64];
-  std::snprintf(name, sizeof name, "%s.%04d.exr", stem.c_str(), frame);
-  return name;
 }
 
 bool contains(const std::string& text, const std::string& part) {

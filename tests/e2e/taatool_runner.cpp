@@ -6,6 +6,7 @@
 #include <sys/wait.h>
 
 #include <cerrno>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
@@ -100,6 +101,23 @@ void writeSeparateFrames(const fs::path& folder, int first, int last, int width,
 std::vector<std::string> separateFileArgs(const fs::path& in, const fs::path& outPattern) {
   return {(in / "beauty.####.exr").string(), "--depth", (in / "depth.####.exr").string(),
           "--motion", (in / "motion.####.exr").string(), "-o", outPattern.string()};
+}
+
+std::string frameName(const std::string& stem, int frame) {
+  char name[64];
+  std::snprintf(name, sizeof name, "%s.%04d.exr", stem.c_str(), frame);
+  return name;
+}
+
+Exr readExr(const fs::path& path) {
+  Exr exr;
+  auto in = OIIO::ImageInput::open(path.string());
+  EXPECT_TRUE(in) << path << ": " << OIIO::geterror();
+  if (!in) return exr;
+  exr.spec = in->spec();
+  exr.pixels.resize(exr.spec.image_pixels() * std::size_t(exr.spec.nchannels));
+  EXPECT_TRUE(in->read_image(0, 0, 0, exr.spec.nchannels, OIIO::TypeFloat, exr.pixels.data()));
+  return exr;
 }
 
 }  // namespace taa::test

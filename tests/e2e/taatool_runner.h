@@ -1,6 +1,8 @@
 // Running the taatool binary from the end-to-end tests, and checking how it failed.
 #pragma once
 
+#include <OpenImageIO/imageio.h>
+
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -38,5 +40,21 @@ void writeSeparateFrames(const std::filesystem::path& folder, int first, int las
 // taatool's arguments for writeSeparateFrames' files in `in`, output to `outPattern`.
 std::vector<std::string> separateFileArgs(const std::filesystem::path& in,
                                           const std::filesystem::path& outPattern);
+
+// "stem.0007.exr" for frame 7: the names writeSeparateFrames and the tests' outputs use.
+std::string frameName(const std::string& stem, int frame);
+
+// An EXR's header and every channel as float, pixels interleaved.
+struct Exr {
+  OIIO::ImageSpec spec;
+  std::vector<float> pixels;
+  // Pixel `pixel`'s value of `channel` (which must exist).
+  float at(std::size_t pixel, const std::string& channel) const {
+    return pixels[pixel * std::size_t(spec.nchannels) + std::size_t(spec.channelindex(channel))];
+  }
+};
+
+// The file at `path`; a test failure (and an empty Exr) when it cannot be read.
+Exr readExr(const std::filesystem::path& path);
 
 }  // namespace taa::test
