@@ -18,22 +18,30 @@ float gSourceCryptoWeight[CRYPTO_SLOTS];
 float gCryptoTotal, gSourceCryptoTotal;
 
 // Adds `weight` to `id` in the slots `ids`/`weights` (a macro: GLSL copies arrays passed to
-// functions, which llvmpipe pays for on every sample).
+// functions, which llvmpipe pays for on every sample). Every index is the loop's counter, never
+// a computed slot: llvmpipe keeps arrays indexed only by unrolled counters in registers, and
+// moves an array indexed by a value (the lightest slot) to memory, for every access.
 #define CRYPTO_ADD(ids, weights, id, weight)                                          \
   {                                                                                   \
     uint cryptoId = (id);                                                             \
     float cryptoWeight = (weight);                                                    \
     bool placed = !(cryptoWeight > 0.0);                                              \
     int lightest = 0;                                                                 \
+    float lightestWeight = 0.0;                                                       \
     for (int slot = 0; slot < CRYPTO_SLOTS; ++slot) {                                 \
       bool same = !placed && weights[slot] > 0.0 && ids[slot] == cryptoId;            \
       weights[slot] += same ? cryptoWeight : 0.0;                                     \
       placed = placed || same;                                                        \
-      lightest = weights[slot] < weights[lightest] ? slot : lightest;                 \
+      bool lighter = slot == 0 || weights[slot] < lightestWeight;                     \
+      lightest = lighter ? slot : lightest;                                           \
+      lightestWeight = lighter ? weights[slot] : lightestWeight;                      \
     }                                                                                 \
-    bool replace = !placed && cryptoWeight > weights[lightest];                       \
-    ids[lightest] = replace ? cryptoId : ids[lightest];                               \
-    weights[lightest] = replace ? cryptoWeight : weights[lightest];                   \
+    bool replace = !placed && cryptoWeight > lightestWeight;                          \
+    for (int slot = 0; slot < CRYPTO_SLOTS; ++slot) {                                 \
+      bool here = replace && slot == lightest;                                        \
+      ids[slot] = here ? cryptoId : ids[slot];                                        \
+      weights[slot] = here ? cryptoWeight : weights[slot];                            \
+    }                                                                                 \
   }
 
 void cryptoBegin() {
@@ -80,25 +88,25 @@ void cryptoSourceEnd(float scale) {
 }
 
 // The six heaviest IDs with their coverage, heaviest first, as three rank layers of two pairs
-// (id, coverage, id, coverage); empty pairs are 0, 0.
+// (id, coverage, id, coverage); empty pairs are 0, 0. Indexed by counters only (CRYPTO_ADD).
 void cryptoOutput(out vec4 rank0, out vec4 rank1, out vec4 rank2) {
   float pairs[12];
-  for (int i = 0; i < 12; ++i) pairs[i] = 0.0;
   bool taken[CRYPTO_SLOTS];
   for (int slot = 0; slot < CRYPTO_SLOTS; ++slot) taken[slot] = false;
   for (int rank = 0; rank < 6; ++rank) {
     int heaviest = -1;
     float most = 0.0;
+    uint id = 0u;
     for (int slot = 0; slot < CRYPTO_SLOTS; ++slot) {
       bool heavier = !taken[slot] && gCryptoWeight[slot] > most;
       most = heavier ? gCryptoWeight[slot] : most;
+      id = heavier ? gCryptoId[slot] : id;
       heaviest = heavier ? slot : heaviest;
     }
-    if (heaviest >= 0) {
-      taken[heaviest] = true;
-      pairs[2 * rank] = uintBitsToFloat(gCryptoId[heaviest]);
-      pairs[2 * rank + 1] = most / max(gCryptoTotal, 1e-30);
-    }
+    for (int slot = 0; slot < CRYPTO_SLOTS; ++slot) taken[slot] = taken[slot] || slot == heaviest;
+    bool found = heaviest >= 0;
+    pairs[2 * rank] = found ? uintBitsToFloat(id) : 0.0;
+    pairs[2 * rank + 1] = found ? most / max(gCryptoTotal, 1e-30) : 0.0;
   }
   rank0 = vec4(pairs[0], pairs[1], pairs[2], pairs[3]);
   rank1 = vec4(pairs[4], pairs[5], pairs[6], pairs[7]);
