@@ -143,7 +143,15 @@ float gWeight;
 float gSourceWeight;
 vec4 gSourceSum;
 float gSourceLumaSum, gSourceLumaSquares;
-float gOwnDepth[9];  // t's 3x3 signed depths (+ static, - moving), row by row
+// t's 3x3 signed depths (+ static, - moving), a row each, top row (dy = -1) first: vectors,
+// not an array, because llvmpipe moves an array it sees indexed by a computed value to memory.
+vec3 gOwnDepthRow0, gOwnDepthRow1, gOwnDepthRow2;
+
+// t's own signed depth at `q` (0..2 each way) of the 3x3.
+float ownDepthAt(ivec2 q) {
+  vec3 row = q.y == 0 ? gOwnDepthRow0 : (q.y == 1 ? gOwnDepthRow1 : gOwnDepthRow2);
+  return q.x == 0 ? row.x : (q.x == 1 ? row.y : row.z);
+}
 ivec2 gPixel;
 float gCandidates, gHidden, gDisagreeing;
 // The current source's uniforms, read once: indexing uniform arrays by a loop variable costs a
@@ -219,7 +227,7 @@ void addStaticSample(ivec2 corner, ivec2 step, bool skip, ivec2 taken, float fra
   // means the static sample is inside the moving object's footprint at t.
   ivec2 q = clamp(ivec2(floor(h.xy * (1.0 / h.z) - uTargetJitter)) - gPixel + 1, ivec2(0),
                   ivec2(2));
-  float there = gOwnDepth[3 * q.y + q.x];
+  float there = ownDepthAt(q);
   bool insideMoving =
       uOpaqueMoving && there < 0.0 && !(carriedDepth < -there * (1.0 - uDepthTolerance));
   bool hidden = hiddenBehind(carriedDepth, gFarthest, uDepthTolerance) || insideMoving;
@@ -316,6 +324,7 @@ void main() {
   }
 #endif
   float depths[9];
+  float signedDepths[9];
   float movingDepth = 1.0 / 0.0;
   ivec2 movingAt = pixel;  // the nearest moving sample of the 3x3, if any
   bool anyMoving = false;
@@ -331,7 +340,7 @@ void main() {
       float signedDepth = entry.depth;
       float depth = abs(signedDepth);
       depths[3 * (dy + 1) + dx + 1] = depth;
-      gOwnDepth[3 * (dy + 1) + dx + 1] = signedDepth;
+      signedDepths[3 * (dy + 1) + dx + 1] = signedDepth;
       gNearest = min(gNearest, depth);
       gFarthest = max(gFarthest, depth);
       // Selects, not ifs: llvmpipe runs an if's body for every pixel anyway, masked.
@@ -352,6 +361,9 @@ void main() {
       ownLumaSquares += w * y * y;
     }
   }
+  gOwnDepthRow0 = vec3(signedDepths[0], signedDepths[1], signedDepths[2]);
+  gOwnDepthRow1 = vec3(signedDepths[3], signedDepths[4], signedDepths[5]);
+  gOwnDepthRow2 = vec3(signedDepths[6], signedDepths[7], signedDepths[8]);
   addSample(ownSum, 1.0);  // weights already applied
   gWeight += ownWeight - 1.0;
 #if LINEAR_SUM
