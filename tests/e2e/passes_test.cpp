@@ -5,6 +5,7 @@
 // types.
 #include <gtest/gtest.h>
 
+#include <Imath/half.h>
 #include <OpenImageIO/imageio.h>
 
 #include <cmath>
@@ -13,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "taa/taa.h"
 #include "taatool_runner.h"
 
 namespace taa {
@@ -289,6 +291,145 @@ TEST_F(PassesTest, BadRulesAndTheHistoryModeAreRefusedWithAMessage) {
   const ToolRun r = run({"--mode", "history"}, "history");
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_EQ(readExr(dir_ / "history" / frameName("r", 3)).spec.nchannels, 4);
+}
+
+// The C ABI node (taa.h) resolves a render's passes as taatool does: the same frames pushed with
+// their passes (light passes in half buffers, data in float ones, as the file holds them) give
+// taatool's channels bit for bit, and a pass the node was not given is an error naming the ones
+// it has.
+TEST_F(PassesTest, TheCApiNodeResolvesThePassesAsTaatoolDoes) {
+  const ToolRun r = run({});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+
+  // Every frame as the host holds it: the beauty file's channels as float and as half.
+  struct HostFrame {
+    Exr beauty, depth, motion;
+    std::vector<Imath::half> halves;
+    taa_buffer floats{}, halfs{}, color{}, depthBuffer{}, motionBuffer{};
+    std::vector<taa_pass> passes;
+    std::vector<float> toCamera, toNdc;
+  };
+  std::vector<HostFrame> frames(kFrames);
+  for (int f = 1; f <= kFrames; ++f) {
+    HostFrame& h = frames[std::size_t(f - 1)];
+    h.beauty = readExr(in_ / frameName("beauty", f));
+    h.depth = readExr(in_ / frameName("depth", f));
+    h.motion = readExr(in_ / frameName("motion", f));
+    const OIIO::ImageSpec& spec = h.beauty.spec;
+    h.halves.assign(h.beauty.pixels.begin(), h.beauty.pixels.end());
+    const auto buffer = [&](void* data, int channels, taa_pixel_type type) {
+      taa_buffer b{};
+      b.data = data;
+      b.width = kWidth;
+      b.height = kHeight;
+      b.channels = channels;
+      b.type = type;
+      return b;
+    };
+    h.floats = buffer(h.beauty.pixels.data(), spec.nchannels, TAA_PIXEL_FLOAT);
+    h.halfs = buffer(h.halves.data(), spec.nchannels, TAA_PIXEL_HALF);
+    ASSERT_EQ(spec.channelindex("R"), 0);
+    ASSERT_EQ(spec.channelindex("A"), 3);
+    h.color = h.floats;
+    h.color.channels = 4;
+    h.color.pixel_stride_bytes = std::ptrdiff_t(spec.nchannels) * 4;
+    h.depthBuffer = buffer(h.depth.pixels.data(), 1, TAA_PIXEL_FLOAT);
+    h.motionBuffer = buffer(h.motion.pixels.data(), 2, TAA_PIXEL_FLOAT);
+    for (int c = 4; c < spec.nchannels; ++c) {
+      const bool half = spec.channelformat(c) == OIIO::TypeHalf;
+      h.passes.push_back({spec.channelnames[std::size_t(c)].c_str(), half ? &h.halfs : &h.floats,
+                          c});
+    }
+    for (const auto& [name, to] : {std::pair{"worldToCamera", &h.toCamera},
+                                   std::pair{"worldToNDC", &h.toNdc}}) {
+      if (const OIIO::ParamValue* m = spec.find_attribute(name, OIIO::TypeMatrix44)) {
+        const auto* v = static_cast<const float*>(m->data());
+        to->assign(v, v + 16);
+      }
+    }
+  }
+
+  taa_node* node = nullptr;
+  ASSERT_EQ(taa_node_create(nullptr, &node), TAA_OK) << taa_last_error();
+  ASSERT_EQ(taa_node_set_string(node, "mode", "window"), TAA_OK) << taa_node_last_error(node);
+  for (int f = 1; f <= kFrames; ++f) {
+    HostFrame& h = frames[std::size_t(f - 1)];
+    taa_frame frame;
+    taa_frame_init(&frame);
+    frame.frame = f;
+    frame.color = &h.color;
+    frame.depth = &h.depthBuffer;
+    frame.motion = &h.motionBuffer;
+    if (!h.toCamera.empty() && !h.toNdc.empty()) {
+      frame.world_to_camera = h.toCamera.data();
+      frame.world_to_ndc = h.toNdc.data();
+    }
+    ASSERT_EQ(taa_node_push_frame_passes(node, &frame, h.passes.data(), int(h.passes.size())),
+              TAA_OK)
+        << taa_node_last_error(node);
+  }
+
+  const int f = 3;
+  ASSERT_EQ(taa_node_resolve_frame(node, f), TAA_OK) << taa_node_last_error(node);
+  const Exr out = readExr(dir_ / "out" / frameName("r", f));
+  const HostFrame& h = frames[std::size_t(f - 1)];
+  // Read back as the file holds them: half channels into a half buffer, the rest as float.
+  std::vector<float> floats(h.beauty.pixels.size());
+  std::vector<Imath::half> halves(h.beauty.pixels.size());
+  taa_buffer floatOut = h.floats, halfOut = h.halfs;
+  floatOut.data = floats.data();
+  halfOut.data = halves.data();
+  std::vector<taa_pass> wanted = h.passes;
+  for (taa_pass& pass : wanted) pass.buffer = pass.buffer == &h.halfs ? &halfOut : &floatOut;
+  ASSERT_EQ(taa_node_read_passes(node, wanted.data(), int(wanted.size())), TAA_OK)
+      << taa_node_last_error(node);
+  for (const taa_pass& pass : wanted) {
+    const bool half = pass.buffer == &halfOut;
+    for (std::size_t p = 0; p < out.spec.image_pixels(); ++p) {
+      const std::size_t at = p * std::size_t(h.beauty.spec.nchannels) + std::size_t(pass.channel);
+      const float fromNode = half ? float(halves[at]) : floats[at];
+      const float tool = out.at(p, pass.name);
+      // The same GPU program on the same values in the same types: taatool's value bit for bit.
+      ASSERT_EQ(fromNode, tool) << pass.name << ", pixel " << p;
+    }
+  }
+
+  // Frame 3 pushed again without passes: the frames pushed with them leave the ring, and a
+  // window that needs one says so.
+  taa_frame again;
+  taa_frame_init(&again);
+  again.frame = f;
+  again.color = &h.color;
+  again.depth = &h.depthBuffer;
+  again.motion = &h.motionBuffer;
+  if (!h.toCamera.empty() && !h.toNdc.empty()) {
+    again.world_to_camera = h.toCamera.data();
+    again.world_to_ndc = h.toNdc.data();
+  }
+  ASSERT_EQ(taa_node_push_frame(node, &again), TAA_OK) << taa_node_last_error(node);
+  EXPECT_EQ(taa_node_resolve_frame(node, f), TAA_ERROR_MISSING_FRAME);
+  EXPECT_NE(std::string(taa_node_last_error(node)).find("pushed with other passes"),
+            std::string::npos)
+      << taa_node_last_error(node);
+
+  // A pass it was not given; passes in history mode.
+  taa_pass unknown{"Shadow.R", &floatOut, 0};
+  EXPECT_EQ(taa_node_read_passes(node, &unknown, 1), TAA_ERROR_INVALID_ARGUMENT);
+  EXPECT_NE(std::string(taa_node_last_error(node)).find("no pass \"Shadow.R\" (it has CryptoObject00.r, CryptoObject00.g"),
+            std::string::npos)
+      << taa_node_last_error(node);
+  ASSERT_EQ(taa_node_set_string(node, "mode", "history"), TAA_OK);
+  taa_frame frame;
+  taa_frame_init(&frame);
+  frame.frame = 1;
+  frame.color = &frames[0].color;
+  EXPECT_EQ(taa_node_push_frame_passes(node, &frame, frames[0].passes.data(),
+                                       int(frames[0].passes.size())),
+            TAA_ERROR_INVALID_ARGUMENT);
+  EXPECT_NE(std::string(taa_node_last_error(node)).find("\"mode\" = \"window\""),
+            std::string::npos)
+      << taa_node_last_error(node);
+  taa_node_destroy(node);
 }
 
 }  // namespace

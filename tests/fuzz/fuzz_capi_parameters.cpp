@@ -21,7 +21,7 @@ const std::vector<std::string> kNames = {
     "depth-tolerance", "rectify", "box-space", "neighbourhood", "variance-gamma", "thin-hold",
     "thin-hold-speed", "cut-detection", "sharpen", "bracket", "colorspace-in", "colorspace-out",
     "ocio-config", "motion-y", "motion-to", "motion-scale", "depth-nohit", "reset-on-gap",
-    "output-type", "ndc"};
+    "output-type", "ndc", "aov"};
 
 taa_node* sharedNode() {
   static taa_node* node = [] {

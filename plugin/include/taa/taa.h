@@ -166,7 +166,9 @@ TAA_API const char* taa_node_last_error(const taa_node* node);
  *   not the previous one + 1, as taatool does); "ndc" zero-one-y-down|minus-one-one-y-up
  *   (string: what world_to_ndc maps to); "output-type" float|half (string, default float:
  *   the type the result is read back from the GPU in; half suits half output buffers: half
- *   the read-back, no conversion, the same values a float read-back narrowed gives).
+ *   the read-back, no conversion, the same values a float read-back narrowed gives); "aov"
+ *   (string: the passes' kinds, taatool's --aov rules "PATTERN=kind" separated by ';', see
+ *   taa_pass).
  * An unknown name gives TAA_ERROR_UNKNOWN_PARAMETER, a typed parameter set with another type
  * TAA_ERROR_WRONG_TYPE, a value out of range TAA_ERROR_INVALID_ARGUMENT; the message names the
  * parameter. Changes apply from the next pushed frame (window mode: the next push or resolve). */
@@ -178,6 +180,38 @@ TAA_API taa_status taa_node_set_string(taa_node* node, const char* name, const c
  * frame farthest from it when the ring is full, replacing a frame of the same number) and
  * resolves nothing. All buffers must have the same width and height. */
 TAA_API taa_status taa_node_push_frame(taa_node* node, const taa_frame* frame);
+
+/* A frame's other passes (issue 21): light passes, their colour (albedo) passes, data passes
+ * and Cryptomatte, resolved with the beauty's own weights, so the comp's sums still add up
+ * (Combined = sum of (Dir + Ind) x Col + Emit + Env, as Cycles writes them). Window mode only.
+ * Each channel is named as the render names it ("ViewLayer.DiffDir.R",
+ * "ViewLayer.CryptoObject00.r", "Normal.X") and read from one channel of a host buffer (half
+ * or float, the colour's size; several channels may share a buffer, e.g. an RGBA plane). Its
+ * kind comes from its name as taatool's defaults give it (README, "Every pass"), or from the
+ * node's "aov" parameter (taatool's --aov rules, "PATTERN=kind" separated by ';'): light and
+ * factor passes are summed (a light with its factor as the product, divided at the end),
+ * normals averaged and renormalised, depth, IDs and other data taken from the frame's own
+ * sample (never blended), Cryptomatte rank pairs re-weighed per ID. A channel keeps its
+ * buffer's type in the ring: give light passes as half, Cryptomatte and positions as float, as
+ * the render wrote them. */
+typedef struct taa_pass {
+  const char* name;          /* unique within a frame */
+  const taa_buffer* buffer;  /* holds the channel's values */
+  int channel;               /* which channel of `buffer` (0-based) */
+} taa_pass;
+
+/* taa_node_push_frame with the frame's `count` passes. Every frame in the ring carries the same
+ * channels: pushing other names, kinds or types (or none) empties the ring of the frames pushed
+ * with the old ones. count 0: none (taa_node_push_frame). History mode: TAA_ERROR_INVALID_ARGUMENT
+ * (the message names "mode" = "window"). */
+TAA_API taa_status taa_node_push_frame_passes(taa_node* node, const taa_frame* frame,
+                                              const taa_pass* passes, int count);
+
+/* Copies channels of the last resolved frame's passes, each by name, into its buffer's channel
+ * (the frame's size); a half buffer gets values rounded as Imath::half, clamped to +-65504, as
+ * taatool writes a half channel. Any subset, in any order. TAA_ERROR_NO_OUTPUT when the last
+ * resolved frame had no passes, TAA_ERROR_INVALID_ARGUMENT for a name it did not have. */
+TAA_API taa_status taa_node_read_passes(taa_node* node, const taa_pass* passes, int count);
 
 /* Window mode: resolves `frame` from its window of pushed frames (see "Window mode" above).
  * TAA_ERROR_MISSING_FRAME when the frame or one of its window is not in the ring (the message

@@ -224,4 +224,51 @@ void exportColor(const TypedImage& image, const taa_buffer& buffer) {
   }
 }
 
+namespace {
+
+// The layout of a pass channel's buffer, checked: the channel must be one it has.
+Layout passLayout(const PassChannel& pass, const std::string& what, int width, int height) {
+  const std::string name = what + " \"" + pass.name + "\"";
+  constexpr int kMaxChannels = 1 << 16;
+  const Layout layout = describe(*pass.buffer, name.c_str(), 1, kMaxChannels, width, height);
+  if (pass.channel < 0 || pass.channel >= layout.channels) {
+    invalid(name + " asks for channel " + std::to_string(pass.channel) + " of a buffer of " +
+            std::to_string(layout.channels) + " channels");
+  }
+  return layout;
+}
+
+}  // namespace
+
+Image importPasses(const std::vector<PassChannel>& channels, int width, int height,
+                   std::vector<OIIO::TypeDesc>& types) {
+  Image image(width, height, int(channels.size()));
+  types.clear();
+  for (std::size_t c = 0; c < channels.size(); ++c) {
+    const Layout layout = passLayout(channels[c], "pass", width, height);
+    types.push_back(layout.half ? OIIO::TypeHalf : OIIO::TypeFloat);
+    float* out = &image.pixels[c];
+    for (int y = 0; y < height; ++y) {
+      for (int x = 0; x < width; ++x, out += channels.size()) {
+        *out = layout.read(layout.pixel(x, y), channels[c].channel);
+      }
+    }
+  }
+  return image;
+}
+
+void exportPasses(const Image& image, const std::vector<int>& sources,
+                  const std::vector<PassChannel>& channels) {
+  for (std::size_t c = 0; c < channels.size(); ++c) {
+    const Layout layout = passLayout(channels[c], "output pass", image.width, image.height);
+    const std::size_t stride = std::size_t(image.channels);
+    const float* in = &image.pixels[std::size_t(sources[c])];
+    for (int y = 0; y < image.height; ++y) {
+      for (int x = 0; x < image.width; ++x, in += stride) {
+        layout.write(layout.pixel(x, y), channels[c].channel, *in);
+      }
+    }
+  }
+}
+
 }  // namespace taa::capi

@@ -5,6 +5,11 @@
 // being widened on the CPU (the resolve samples the same values either way).
 #pragma once
 
+#include <OpenImageIO/typedesc.h>
+
+#include <string>
+#include <vector>
+
 #include "io/aov_conversion.h"
 #include "io/aov_layout.h"
 #include "taa/taa.h"
@@ -33,5 +38,22 @@ Image importMotion(const taa_buffer& buffer, const io::MotionConvention& convent
 // rounds as Imath::half, beyond +-65504 clamps to it), so an output read back in the buffer's
 // type passes through as is.
 void exportColor(const TypedImage& image, const taa_buffer& buffer);
+
+// One pass channel in a host buffer (taa_pass): channel `channel` of `buffer`.
+struct PassChannel {
+  const taa_buffer* buffer = nullptr;
+  int channel = 0;
+  std::string name;  // for errors
+};
+
+// The channels' values as float, one image channel each in order; `types` gets each one's
+// host type (half or float).
+Image importPasses(const std::vector<PassChannel>& channels, int width, int height,
+                   std::vector<OIIO::TypeDesc>& types);
+
+// Channel sources[i] of `image` into channels[i] (the image's size), each value converted as
+// exportColor converts.
+void exportPasses(const Image& image, const std::vector<int>& sources,
+                  const std::vector<PassChannel>& channels);
 
 }  // namespace taa::capi

@@ -5,6 +5,8 @@
 #include <new>
 #include <string>
 
+#include <vector>
+
 #include "capi/host_enum.h"
 #include "capi/node.h"
 #include "capi/status_error.h"
@@ -157,7 +159,28 @@ taa_status taa_node_set_string(taa_node* node, const char* name, const char* val
 taa_status taa_node_push_frame(taa_node* node, const taa_frame* frame) {
   return guarded(node, "taa_node_push_frame", [&](taa::capi::Node& n) {
     if (!frame) throw StatusError(TAA_ERROR_INVALID_ARGUMENT, "frame is NULL");
-    n.pushFrame(*frame);
+    n.pushFrame(*frame, {});
+  });
+}
+
+taa_status taa_node_push_frame_passes(taa_node* node, const taa_frame* frame,
+                                      const taa_pass* passes, int count) {
+  return guarded(node, "taa_node_push_frame_passes", [&](taa::capi::Node& n) {
+    if (!frame) throw StatusError(TAA_ERROR_INVALID_ARGUMENT, "frame is NULL");
+    if (count < 0 || (count > 0 && !passes)) {
+      throw StatusError(TAA_ERROR_INVALID_ARGUMENT, "passes is NULL or count negative");
+    }
+    n.pushFrame(*frame, count > 0 ? std::vector<taa_pass>(passes, passes + count)
+                                  : std::vector<taa_pass>());
+  });
+}
+
+taa_status taa_node_read_passes(taa_node* node, const taa_pass* passes, int count) {
+  return guarded(node, "taa_node_read_passes", [&](taa::capi::Node& n) {
+    if (count < 0 || (count > 0 && !passes)) {
+      throw StatusError(TAA_ERROR_INVALID_ARGUMENT, "passes is NULL or count negative");
+    }
+    n.readPasses(std::vector<taa_pass>(passes, passes + count));
   });
 }
 

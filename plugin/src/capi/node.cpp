@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 #include <utility>
 
 #include "capi/buffer_conversion.h"
@@ -83,10 +84,16 @@ void Node::setString(const std::string& name, const std::string& value) {
   parametersChanged_ = true;
 }
 
-void Node::pushFrame(const taa_frame& frame) {
+void Node::pushFrame(const taa_frame& frame, const std::vector<taa_pass>& passes) {
   if (!frame.color) {
     throw StatusError(TAA_ERROR_INVALID_ARGUMENT, "frame " + std::to_string(frame.frame) +
                                                       " has no color buffer (NULL)");
+  }
+  if (!passes.empty() && !windowMode()) {
+    throw StatusError(TAA_ERROR_INVALID_ARGUMENT,
+                      "frame " + std::to_string(frame.frame) +
+                          ": passes are resolved in window mode only (parameter \"mode\" = "
+                          "\"window\"); history mode has no per-sample weights to give them");
   }
   // Convert every input before touching the resolver, so a bad buffer leaves history intact.
   // Half colour stays half: the resolver uploads it as is.
@@ -169,16 +176,51 @@ void Node::pushFrame(const taa_frame& frame) {
   input.color = &color;
   input.depth = frame.depth ? &depth : nullptr;
   input.motion = frame.motion ? &motion : nullptr;
+  const std::optional<FramePasses> framePasses =
+      passes.empty() ? std::nullopt
+                     : std::optional<FramePasses>(
+                           importFramePasses(frame.frame, passes, width, height));
 
   const auto current = bindContext();
   if (windowMode()) {
-    windowFrames().push(frame.frame, input, resetRequested_, matrices);
+    windowFrames().push(frame.frame, input, resetRequested_, matrices,
+                        framePasses ? &*framePasses : nullptr);
   } else {
     window_.reset();  // switching modes frees the ring
     resolveInHistory(frame.frame, input);
+    passesOutput_ = Image();
+    passesOutputNames_.clear();
     outputMatrices_ = matrices;
   }
   resetRequested_ = false;
+}
+
+FramePasses Node::importFramePasses(int frame, const std::vector<taa_pass>& passes, int width,
+                                    int height) const {
+  const std::string which = "frame " + std::to_string(frame) + "'s passes";
+  FramePasses imported;
+  std::set<std::string> seen;
+  std::vector<PassChannel> channels;
+  for (std::size_t c = 0; c < passes.size(); ++c) {
+    const taa_pass& pass = passes[c];
+    if (!pass.name || !*pass.name) {
+      throw StatusError(TAA_ERROR_INVALID_ARGUMENT,
+                        which + ": channel " + std::to_string(c) + " has no name");
+    }
+    if (!seen.insert(pass.name).second) {
+      throw StatusError(TAA_ERROR_INVALID_ARGUMENT,
+                        which + ": channel \"" + std::string(pass.name) + "\" given twice");
+    }
+    if (!pass.buffer) {
+      throw StatusError(TAA_ERROR_INVALID_ARGUMENT,
+                        which + ": channel \"" + std::string(pass.name) + "\" has no buffer");
+    }
+    imported.names.push_back(pass.name);
+    channels.push_back({pass.buffer, pass.channel, pass.name});
+  }
+  imported.values = importPasses(channels, width, height, imported.types);
+  imported.rules = parameters_.passRules;
+  return imported;
 }
 
 void Node::resolveInHistory(int frame, const ResolveInput& input) {
@@ -232,6 +274,8 @@ void Node::resolveFrame(int frame) {
   const auto current = bindContext();
   WindowFrames& window = windowFrames();
   output_ = window.resolve(frame, parameters_.outputType);
+  passesOutput_ = window.takeResolvedPasses();
+  passesOutputNames_ = window.passNames();
   outputMatrices_ = window.matrices(frame);
 }
 
@@ -247,6 +291,34 @@ void Node::readOutput(const taa_buffer& output) const {
     throw StatusError(TAA_ERROR_NO_OUTPUT, "no frame has been resolved yet");
   }
   exportColor(output_, output);
+}
+
+void Node::readPasses(const std::vector<taa_pass>& passes) const {
+  if (passesOutput_.empty()) {
+    throw StatusError(TAA_ERROR_NO_OUTPUT, output_.empty()
+                                               ? "no frame has been resolved yet"
+                                               : "the last resolved frame had no passes "
+                                                 "(taa_node_push_frame_passes)");
+  }
+  std::vector<PassChannel> channels;
+  std::vector<int> sources;
+  for (const taa_pass& pass : passes) {
+    const std::string name = pass.name ? pass.name : "";
+    const auto found = std::find(passesOutputNames_.begin(), passesOutputNames_.end(), name);
+    if (found == passesOutputNames_.end()) {
+      std::string held;
+      for (const std::string& n : passesOutputNames_) held += (held.empty() ? "" : ", ") + n;
+      throw StatusError(TAA_ERROR_INVALID_ARGUMENT,
+                        "the last resolved frame has no pass \"" + name + "\" (it has " + held +
+                            ")");
+    }
+    if (!pass.buffer) {
+      throw StatusError(TAA_ERROR_INVALID_ARGUMENT, "pass \"" + name + "\" has no buffer");
+    }
+    channels.push_back({pass.buffer, pass.channel, name});
+    sources.push_back(int(found - passesOutputNames_.begin()));
+  }
+  exportPasses(passesOutput_, sources, channels);
 }
 
 void Node::cameras(float* worldToCamera, float* worldToNdc) const {

@@ -6,6 +6,8 @@
 #include <array>
 #include <memory>
 #include <optional>
+#include <string>
+#include <vector>
 
 #include "capi/node_parameters.h"
 #include "capi/window_frames.h"
@@ -29,12 +31,14 @@ class Node {
   void setFloat(const std::string& name, float value);
   void setString(const std::string& name, const std::string& value);
 
-  // History mode: resolves the frame. Window mode: puts it into the ring.
-  void pushFrame(const taa_frame& frame);
+  // History mode: resolves the frame. Window mode: puts it into the ring, with its passes if
+  // any (window mode only).
+  void pushFrame(const taa_frame& frame, const std::vector<taa_pass>& passes);
   // Window mode only (TAA_ERROR_INVALID_ARGUMENT otherwise).
   void resolveFrame(int frame);
   void dropFrame(int frame);
   void readOutput(const taa_buffer& output) const;
+  void readPasses(const std::vector<taa_pass>& passes) const;
   void cameras(float* worldToCamera, float* worldToNdc) const;
   // History mode: the next frame starts a new history. Window mode: it starts a new shot.
   void resetHistory() { resetRequested_ = true; }
@@ -50,6 +54,9 @@ class Node {
   bool windowMode() const { return parameters_.resolve.mode == ResolveMode::Window; }
   void requireWindowMode(const char* function) const;
   void resolveInHistory(int frame, const ResolveInput& input);
+  // The host's passes of `frame` checked and read (the colour's `width` x `height`).
+  FramePasses importFramePasses(int frame, const std::vector<taa_pass>& passes, int width,
+                                int height) const;
   // The window ring with the current parameters, made on first use (history freed).
   WindowFrames& windowFrames();
 
@@ -62,6 +69,8 @@ class Node {
   bool resetRequested_ = false;
   std::optional<int> lastFrame_;  // history mode: the last frame resolved
   TypedImage output_;
+  Image passesOutput_;  // the passes of the frame output_ is, if it had any
+  std::vector<std::string> passesOutputNames_;  // and their names, in passesOutput_'s order
   std::optional<FrameMatrices> outputMatrices_;  // the matrices of the frame output_ is
 };
 

@@ -235,6 +235,30 @@ const std::vector<std::pair<std::string, InputParameter>>& inputParameterList() 
                          p.cameraSidecar = std::move(loaded);
                          p.cameraSidecarPath = v;
                        })},
+      {"aov",
+       stringParameter("rules", "the passes' kinds (taa_node_push_frame_passes): taatool's --aov "
+                                "rules, PATTERN=kind separated by ';', first match wins; \"\" "
+                                "for the kinds the channel names give",
+                       [](const NodeParameters& p) { return p.passRulesText; },
+                       [](NodeParameters& p, const std::string& v) {
+                         std::vector<io::ChannelKindRule> rules;
+                         std::size_t start = 0;
+                         while (start <= v.size() && !v.empty()) {
+                           const std::size_t end = std::min(v.find(';', start), v.size());
+                           const std::string rule = v.substr(start, end - start);
+                           if (!rule.empty()) {
+                             try {
+                               rules.push_back(io::parseChannelKindRule(rule));
+                             } catch (const Error& e) {
+                               throw StatusError(TAA_ERROR_INVALID_ARGUMENT,
+                                                 std::string("parameter \"aov\": ") + e.what());
+                             }
+                           }
+                           start = end + 1;
+                         }
+                         p.passRules = std::move(rules);
+                         p.passRulesText = v;
+                       })},
       {"reset-on-gap",
        intParameter("0|1", "history mode: restart history when a frame is not the last + 1",
                     [](const NodeParameters& p) { return std::string(p.resetOnGap ? "1" : "0"); },

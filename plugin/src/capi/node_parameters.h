@@ -9,6 +9,7 @@
 
 #include "io/aov_layout.h"
 #include "io/camera_sidecar.h"
+#include "io/channel_kinds.h"
 #include "resolve/option_registry.h"
 #include "resolve/camera.h"
 #include "taa/options.h"
@@ -38,6 +39,9 @@ struct NodeParameters {
   // their entry's camera, without a jitter their entry's jitter. Null: none.
   std::string cameraSidecarPath;
   std::shared_ptr<const io::CameraSidecar> cameraSidecar;
+  // taatool's --aov rules for the passes' kinds ("aov": "PATTERN=kind" separated by ';').
+  std::string passRulesText;
+  std::vector<io::ChannelKindRule> passRules;
 };
 
 // The node's own parameters (not the registry's resolve options), in documented order: name,

@@ -56,6 +56,7 @@ void WindowFrames::setOptions(const ResolveOptions& options) {
     remove(frame, "removed when a resolve parameter changed (the ring starts empty)");
   }
   resolver_ = std::move(resolver);
+  if (passPlan_) resolver_->setPasses(passPlan_->halfGroups, int(passPlan_->cryptomatte.size()));
   options_ = options;
   optionsText_ = std::move(text);
 }
@@ -64,6 +65,7 @@ void WindowFrames::remove(int frame, const std::string& why) {
   resolver_->dropFrame(frame);
   ring_.erase(frame);
   matrices_.erase(frame);
+  keptPasses_.erase(frame);
   removed_[frame] = why;
 }
 
@@ -77,8 +79,35 @@ int WindowFrames::farthestFrom(int frame) const {
   return farthest;
 }
 
+void WindowFrames::usePasses(std::optional<PassPlan> plan, const std::string& pushed) {
+  const auto sameChannels = [](const PassPlan& a, const PassPlan& b) {
+    return a.names == b.names && a.formats == b.formats && a.kinds == b.kinds;
+  };
+  if (plan.has_value() == passPlan_.has_value() &&
+      (!plan || sameChannels(*plan, *passPlan_))) {
+    return;
+  }
+  for (int held : std::set<int>(ring_)) {
+    remove(held, "removed when " + pushed + " with other passes (every frame in the ring "
+                 "carries the same pass channels)");
+  }
+  resolver_->setPasses(plan ? plan->halfGroups : std::vector<bool>(),
+                       plan ? int(plan->cryptomatte.size()) : 0);
+  passPlan_ = std::move(plan);
+}
+
 void WindowFrames::push(int frame, const ResolveInput& input, bool startsShot,
-                        const FrameMatrices& matrices) {
+                        const FrameMatrices& matrices, const FramePasses* passes) {
+  // Planned before anything changes: a refused push leaves the ring as it was.
+  std::optional<PassPlan> plan;
+  if (passes) {
+    try {
+      plan = planPasses(passes->names, passes->types, passes->rules);
+    } catch (const Error& e) {
+      throw StatusError(TAA_ERROR_INVALID_ARGUMENT,
+                        "frame " + std::to_string(frame) + "'s passes: " + e.what());
+    }
+  }
   const int width = input.color.width, height = input.color.height;
   const bool othersHeld = ring_.size() > (ring_.count(frame) ? 1u : 0u);
   const bool newSize = size_ && *size_ != std::make_pair(width, height);
@@ -92,6 +121,7 @@ void WindowFrames::push(int frame, const ResolveInput& input, bool startsShot,
   }
   if (ring_.count(frame)) remove(frame, "");  // replaced below
   const std::string pushed = "frame " + std::to_string(frame) + " was pushed";
+  usePasses(std::move(plan), pushed);
   if (newSize) {
     for (int held : std::set<int>(ring_)) {
       remove(held, "removed when " + pushed + " with another size, starting a shot");
@@ -100,8 +130,15 @@ void WindowFrames::push(int frame, const ResolveInput& input, bool startsShot,
     remove(farthestFrom(frame), "evicted when " + pushed + " into the full ring of " +
                                     std::to_string(resolver_->capacity()) + " frames");
   }
+  PackedPasses packed;
+  ResolveInput withPasses = input;
+  if (passPlan_) {
+    packed = packPasses(passes->values, *passPlan_);
+    for (const TypedImage& group : packed.groups) withPasses.passGroups.emplace_back(&group);
+    for (const Image& set : packed.cryptomatte) withPasses.cryptomatte.emplace_back(&set);
+  }
   try {
-    resolver_->addFrame(frame, input);
+    resolver_->addFrame(frame, withPasses);
   } catch (const Error& e) {
     resolver_->dropFrame(frame);  // whatever part of it was stored
     removed_[frame] = "its push failed";
@@ -109,6 +146,7 @@ void WindowFrames::push(int frame, const ResolveInput& input, bool startsShot,
   }
   ring_.insert(frame);
   matrices_[frame] = matrices;
+  if (passPlan_) keptPasses_[frame] = std::move(packed.kept);
   size_ = std::make_pair(width, height);
   known_.insert(frame);
   removed_.erase(frame);
@@ -154,7 +192,13 @@ TypedImage WindowFrames::resolve(int frame, SampleType outputType) {
     }
   }
   try {
-    return resolver_->resolve(frame, window.first, window.last, outputType);
+    TypedImage output = resolver_->resolve(frame, window.first, window.last, outputType);
+    resolvedPasses_ = Image();
+    if (passPlan_ && !passPlan_->empty()) {
+      resolvedPasses_ = finishPasses(resolver_->lastPasses(), resolver_->lastCryptomatte(),
+                                     keptPasses_.at(frame), *passPlan_);
+    }
+    return output;
   } catch (const Error& e) {
     throw StatusError(TAA_ERROR_INTERNAL, "frame " + std::to_string(frame) + ": " + e.what());
   }

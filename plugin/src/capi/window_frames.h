@@ -13,6 +13,8 @@
 #include <string>
 
 #include "gl/context.h"
+#include "io/channel_kinds.h"
+#include "resolve/pass_plan.h"
 #include "resolve/window_resolver.h"
 #include "taa/options.h"
 #include "util/image.h"
@@ -22,6 +24,15 @@ namespace taa::capi {
 // The camera matrices a frame was pushed with (16 floats, row-major, as the host gave them).
 struct FrameMatrices {
   std::optional<std::array<float, 16>> worldToCamera, worldToNdc;
+};
+
+// A frame's passes as the host gave them (taa_passes): values as float, the host buffer's type,
+// and the rules their kinds come from (the node's "aov" parameter).
+struct FramePasses {
+  std::vector<std::string> names;
+  std::vector<OIIO::TypeDesc> types;  // per channel: its host buffer's, half or float
+  Image values;
+  std::vector<io::ChannelKindRule> rules;
 };
 
 class WindowFrames {
@@ -42,14 +53,24 @@ class WindowFrames {
   // frame farthest from it (the earlier of two as far) is evicted. `startsShot` marks it as
   // the first frame of a shot; a frame of another size than the ring's must be one, and then
   // empties the ring. Throws StatusError (a size conflict leaves the ring as it was).
+  // With `passes`: the frame's passes, resolved with the beauty's weights (issue 21). Every
+  // frame in the ring carries the same pass channels (names, kinds, types) or none: a push
+  // with others first removes the frames held.
   void push(int frame, const ResolveInput& input, bool startsShot,
-            const FrameMatrices& matrices);
+            const FrameMatrices& matrices, const FramePasses* passes = nullptr);
   // Takes `frame` out of the ring; it stays known as pushed. Nothing when it is not held.
   void drop(int frame);
 
   // Resolves `frame` from its window. Throws StatusError(TAA_ERROR_MISSING_FRAME) naming the
   // frame of the window that is not in the ring and why.
   TypedImage resolve(int frame, SampleType outputType);
+  // The passes of the frame resolve() resolved last, the channels in the order pushed (empty
+  // when it had none); moved out.
+  Image takeResolvedPasses() { return std::move(resolvedPasses_); }
+  // The names of the channels the ring's frames carry (none: empty).
+  std::vector<std::string> passNames() const {
+    return passPlan_ ? passPlan_->names : std::vector<std::string>();
+  }
   // The matrices `frame` was pushed with; it must be in the ring.
   const FrameMatrices& matrices(int frame) const;
 
@@ -57,6 +78,9 @@ class WindowFrames {
   // Takes `frame` out of the ring, remembering `why` (for a later window that needs it).
   void remove(int frame, const std::string& why);
   int farthestFrom(int frame) const;
+  // Makes the ring's frames carry `plan`'s passes (none: nullopt), removing the frames held
+  // when that changes; `pushed` names the push that asks, for their reason.
+  void usePasses(std::optional<PassPlan> plan, const std::string& pushed);
   std::string missingMessage(int missing, int frame, int first, int last) const;
 
   gl::Context& context_;
@@ -69,6 +93,9 @@ class WindowFrames {
   std::set<int> known_;                   // every frame number ever pushed
   std::set<int> shotStarts_;
   std::map<int, std::string> removed_;    // known frames not in the ring: why they left
+  std::optional<PassPlan> passPlan_;      // the passes every frame in the ring carries
+  std::map<int, Image> keptPasses_;       // per frame in the ring: its channels not summed
+  Image resolvedPasses_;
 };
 
 }  // namespace taa::capi
