@@ -4,6 +4,7 @@
 #include <pybind11/stl.h>
 
 #include <cstdlib>
+#include <map>
 #include <optional>
 #include <string>
 #include <utility>
@@ -150,7 +151,7 @@ class Node {
 
   py::object push(const py::handle& color, const py::handle& depth, const py::handle& motion,
                   int frame, const py::handle& jitter, bool yUp, const py::handle& worldToCamera,
-                  const py::handle& worldToNdc) {
+                  const py::handle& worldToNdc, const py::handle& passes) {
     ArrayBuffer colorBuffer = asBuffer(color, "color", 3, 4);
     std::optional<ArrayBuffer> depthBuffer, motionBuffer;
     if (!depth.is_none()) depthBuffer = asBuffer(depth, "depth", 1, 1);
@@ -182,17 +183,41 @@ class Node {
       input.world_to_ndc = w2ndc.data();
     }
 
+    // The passes: one array a channel, each keeping its type (float16 stays half).
+    std::vector<std::string> passNames;
+    std::vector<ArrayBuffer> passBuffers;
+    std::map<std::string, bool> passHalf;
+    if (!passes.is_none()) {
+      if (!py::isinstance<py::dict>(passes)) {
+        throw PythonError("passes must be a dict of channel name -> (H, W) array");
+      }
+      for (const auto& [key, value] : passes.cast<py::dict>()) {
+        const std::string name = py::str(key).cast<std::string>();
+        passBuffers.push_back(asBuffer(value, ("passes['" + name + "']").c_str(), 1, 1));
+        passBuffers.back().buffer.y_up = yUp ? 1 : 0;
+        passNames.push_back(name);
+        passHalf[name] = passBuffers.back().buffer.type == TAA_PIXEL_HALF;
+      }
+    }
+    std::vector<taa_pass> passList;
+    for (std::size_t c = 0; c < passNames.size(); ++c) {
+      passList.push_back({passNames[c].c_str(), &passBuffers[c].buffer, 0});
+    }
+
     const int height = colorBuffer.buffer.height, width = colorBuffer.buffer.width;
     taa_status status;
     if (windowMode_) {
       {
         py::gil_scoped_release release;
-        status = taa_node_push_frame(node_, &input);
+        status = taa_node_push_frame_passes(node_, &input, passList.data(), int(passList.size()));
       }
       check(status);
       frameShape_ = {height, width};  // the ring holds frames of one size: this one's
+      passHalf_ = std::move(passHalf);
       return py::none();
     }
+    if (!passList.empty()) check(taa_node_push_frame_passes(node_, &input, passList.data(),
+                                                            int(passList.size())));
     py::array_t<float> output({height, width, 4});
     taa_buffer out = outputBuffer(output, yUp);
     {
@@ -215,6 +240,42 @@ class Node {
     }
     check(status);
     return output;
+  }
+
+  // The last resolved frame's passes by name (all pushed with the last frame when `names` is
+  // None): (H, W) arrays, float16 for channels pushed as float16, else float32.
+  py::dict resolvedPasses(const py::handle& names, bool yUp) {
+    std::vector<std::string> wanted;
+    if (names.is_none()) {
+      for (const auto& [name, half] : passHalf_) wanted.push_back(name);
+    } else {
+      for (const py::handle& name : names) wanted.push_back(py::str(name).cast<std::string>());
+    }
+    std::vector<py::array> arrays;
+    std::vector<taa_buffer> buffers(wanted.size());
+    for (std::size_t c = 0; c < wanted.size(); ++c) {
+      const auto half = passHalf_.find(wanted[c]);
+      const bool isHalf = half != passHalf_.end() && half->second;
+      arrays.push_back(isHalf ? py::array(py::dtype("float16"),
+                                          {frameShape_.first, frameShape_.second})
+                              : py::array(py::dtype("float32"),
+                                          {frameShape_.first, frameShape_.second}));
+      taa_buffer& b = buffers[c];
+      b.data = arrays.back().mutable_data();
+      b.height = frameShape_.first;
+      b.width = frameShape_.second;
+      b.channels = 1;
+      b.type = isHalf ? TAA_PIXEL_HALF : TAA_PIXEL_FLOAT;
+      b.y_up = yUp ? 1 : 0;
+    }
+    std::vector<taa_pass> passList;
+    for (std::size_t c = 0; c < wanted.size(); ++c) {
+      passList.push_back({wanted[c].c_str(), &buffers[c], 0});
+    }
+    check(taa_node_read_passes(node_, passList.data(), int(passList.size())));
+    py::dict result;
+    for (std::size_t c = 0; c < wanted.size(); ++c) result[py::str(wanted[c])] = arrays[c];
+    return result;
   }
 
   void drop(int frame) { check(taa_node_drop_frame(node_, frame)); }
@@ -243,6 +304,7 @@ class Node {
   taa_node* node_ = nullptr;
   bool windowMode_ = false;
   std::pair<int, int> frameShape_{0, 0};  // window mode: height, width of the pushed frames
+  std::map<std::string, bool> passHalf_;  // the last pushed frame's passes: float16 or not
 };
 
 // The class documentation: what a node is, then every parameter from the option registry and
@@ -272,7 +334,7 @@ void registerNode(py::module_& module) {
       .def("push", &Node::push, py::arg("color"), py::arg("depth") = py::none(),
            py::arg("motion") = py::none(), py::arg("frame") = 0, py::arg("jitter") = py::none(),
            py::arg("y_up") = false, py::arg("world_to_camera") = py::none(),
-           py::arg("world_to_ndc") = py::none(),
+           py::arg("world_to_ndc") = py::none(), py::arg("passes") = py::none(),
            R"doc(Resolves one frame and returns RGBA float32 of shape (height, width, 4).
 In window mode, puts the frame into the ring instead and returns None (see resolve).
 
@@ -280,12 +342,22 @@ color: (H, W, 3|4) float16/float32 (others are converted), premultiplied; depth:
 (H, W, 1); motion: (H, W, 2) in pixels, converted by the motion_* parameters. frame: the
 frame number (Halton jitter index; a gap resets history, or ends a window). jitter: (x, y) in
 pixels, y down, instead of Halton. y_up: row 0 of every array, output included, is the bottom
-row. world_to_camera, world_to_ndc: 16 values each, row-major as in EXR headers.)doc")
+row. world_to_camera, world_to_ndc: 16 values each, row-major as in EXR headers. passes (window
+mode): the render's other channels, {name: (H, W) array}, named as the render names them
+("ViewLayer.DiffDir.R"); each keeps its type (float16 light passes stay half), its kind comes
+from its name or the "aov" parameter, and it is resolved with the colour's weights (taatool's
+"Every pass of the render"); read them with passes().)doc")
       .def("resolve", &Node::resolve, py::arg("frame"), py::arg("y_up") = false,
            R"doc(Window mode: resolves `frame` from the pushed frames within K of it (consecutive,
 in its shot) and returns RGBA float32 of shape (height, width, 4). Push every existing frame
 of the window first: a frame that was evicted from the full ring (the farthest from the one
 pushed), dropped or removed by a parameter change raises taa.Error naming it.)doc")
+      .def("passes", &Node::resolvedPasses, py::arg("names") = py::none(),
+           py::arg("y_up") = false,
+           R"doc(Window mode: the passes of the frame resolve() resolved last, {name: (H, W)
+array} (float16 where pushed as float16, else float32), every channel pushed with the last
+frame or those `names` lists; taatool's values bit for bit. Raises taa.Error for a name the
+frame did not have.)doc")
       .def("drop", &Node::drop, py::arg("frame"),
            "Window mode: takes a frame out of the ring (windows that need it fail until it is "
            "pushed again).")

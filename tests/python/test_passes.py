@@ -87,3 +87,40 @@ def test_a_list_repeats_an_option(sample_with_passes, tmp_root):
     with pytest.raises(taa.Error, match="unknown kind 'albedo'"):
         taa.resolve_sequence(os.path.join(sample_with_passes, "beauty.####.exr"),
                              aov=["Emit.*=albedo"], **args_for(sample_with_passes, out))
+
+
+def test_node_resolves_passes_as_taatool_does(sample_with_passes, tmp_root):
+    """Node.push(passes={...}) in window mode, then Node.passes(): taatool's channels bit for
+    bit, float16 channels read back as float16."""
+    color = os.path.join(sample_with_passes, "beauty.####.exr")
+    tool = os.path.join(tmp_root, "passes_taatool_for_node")
+    subprocess.run([TAATOOL, color, "--depth", os.path.join(SAMPLE_DIR, "depth.####.exr"),
+                    "--motion", os.path.join(SAMPLE_DIR, "motion.####.exr"), "--frames", "1-6",
+                    "--mode", "window", "--window", "2", "-o", os.path.join(tool, "r.####.exr"),
+                    "-q"], check=True)
+    node = taa.Node(mode="window", window=2)
+    names = ["Emit.R", "Emit.G", "Emit.B", "Position.X"]
+    for frame in range(1, 6):  # frame 3's window: a ring of 2K + 1 = 5
+        path = os.path.join(sample_with_passes, f"beauty.{frame:04d}.exr")
+        beauty = read_exr(path, ["R", "G", "B", "A"])
+        values = read_exr(path, names)
+        passes = {name: values[:, :, i].astype(np.float16 if name.startswith("Emit") else
+                                               np.float32) for i, name in enumerate(names)}
+        node.push(beauty, depth=read_exr(os.path.join(SAMPLE_DIR, f"depth.{frame:04d}.exr"),
+                                         ["Z"])[:, :, 0],
+                  motion=read_exr(os.path.join(SAMPLE_DIR, f"motion.{frame:04d}.exr"),
+                                  ["X", "Y"]),
+                  frame=frame, passes=passes)
+    node.resolve(3)
+    resolved = node.passes()
+    assert sorted(resolved) == sorted(names)
+    assert resolved["Emit.G"].dtype == np.float16 and resolved["Position.X"].dtype == np.float32
+    expected = read_exr(os.path.join(tool, "r.0003.exr"), names)
+    for i, name in enumerate(names):
+        np.testing.assert_array_equal(resolved[name].astype(np.float32), expected[:, :, i])
+    assert list(node.passes(["Emit.B"])) == ["Emit.B"]
+    with pytest.raises(taa.Error, match='no pass "Shadow.R"'):
+        node.passes(["Shadow.R"])
+    history = taa.Node()
+    with pytest.raises(taa.Error, match='"mode" = "window"'):
+        history.push(beauty, passes={"Emit.R": passes["Emit.R"]})
