@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <Imath/half.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -190,6 +192,59 @@ TEST(WriteExrAtomic, ExtraChannelsKeepTheirTypesAndValuesAcrossBands) {
       ASSERT_EQ(pixels[7 * p + 6], extra.image.pixels[3 * p + 2]) << "pixel " << p;
     }
   }
+  expectNoTemporaryFiles(folder);
+}
+
+// Channels handed over packed in their types (ExtraChannels::packed, as a render's finished
+// passes wait to be written) are written as given, across bands; joined with float channels
+// (diagnostics beside them) they are unpacked first and come out the same; a packed block of
+// the wrong size is refused.
+TEST(WriteExrAtomic, PackedExtraChannelsAreWrittenAsGivenAndJoinAsFloat) {
+  const std::string folder = scratchFolder();
+  constexpr int kWidth = 5, kHeight = 300;  // two bands
+  const OIIO::ImageSpec templateSpec = makeSpec(kWidth, kHeight, {"R", "G", "B", "A"});
+  const Image rgba = makeRgba(kWidth, kHeight, [](int p, int c) { return 0.25f * float(p + c); });
+  const std::size_t pixels = std::size_t(kWidth) * kHeight;
+  ExtraChannels packed;
+  packed.names = {"DiffDir.R", "Position.X"};
+  packed.formats = {OIIO::TypeHalf, OIIO::TypeFloat};
+  packed.packed.width = kWidth;
+  packed.packed.height = kHeight;
+  packed.packed.bytes.resize(pixels * 6);
+  for (std::size_t p = 0; p < pixels; ++p) {
+    const Imath::half h(0.5f + 0.001f * float(p));
+    const float f = 1234.5678f + float(p);
+    std::memcpy(&packed.packed.bytes[6 * p], &h, 2);
+    std::memcpy(&packed.packed.bytes[6 * p + 2], &f, 4);
+  }
+  const auto check = [&](const std::string& path, std::size_t stride) {
+    OIIO::ImageSpec spec;
+    const std::vector<float> values = readImage(path, spec);
+    ASSERT_EQ(spec.channelformat(4), OIIO::TypeHalf);
+    ASSERT_EQ(spec.channelformat(5), OIIO::TypeFloat);
+    for (std::size_t p = 0; p < pixels; ++p) {
+      ASSERT_EQ(values[stride * p + 4], roundedToHalf(0.5f + 0.001f * float(p))) << p;
+      ASSERT_EQ(values[stride * p + 5], 1234.5678f + float(p)) << p;
+    }
+  };
+  writeExrAtomic(folder + "/packed.exr", rgba, templateSpec, {PixelType::Half, "zip"}, packed);
+  check(folder + "/packed.exr", 6);
+
+  ExtraChannels joined = packed;
+  ExtraChannels debug;
+  debug.names = {"debug.x"};
+  debug.image = Image(kWidth, kHeight, 1);
+  appendExtraChannels(joined, debug);
+  EXPECT_FALSE(joined.isPacked());
+  writeExrAtomic(folder + "/joined.exr", rgba, templateSpec, {PixelType::Half, "zip"}, joined);
+  check(folder + "/joined.exr", 7);
+
+  ExtraChannels wrong = packed;
+  wrong.packed.bytes.resize(pixels * 6 - 1);
+  const std::string error =
+      errorOf([&] { writeExrAtomic(folder + "/wrong.exr", rgba, templateSpec, {}, wrong); })
+          .what();
+  EXPECT_TRUE(contains(error, "packed extra channels must match")) << error;
   expectNoTemporaryFiles(folder);
 }
 

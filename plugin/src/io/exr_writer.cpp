@@ -80,6 +80,8 @@ bool writeBands(OIIO::ImageOutput& output, const OIIO::ImageSpec& spec, const Im
   const auto* halfColour = static_cast<const Imath::half*>(rgba.data);
   const auto* floatColour = static_cast<const float*>(rgba.data);
   const std::size_t extraCount = std::size_t(extra.image.channels);
+  std::size_t packedBytes = 0;  // a pixel's packed extra channels (ExtraChannels::packed)
+  for (int c = 4; c < spec.nchannels; ++c) packedBytes += spec.channelformat(c).size();
   std::vector<unsigned char> band(std::size_t(kBandRows) * width * pixelBytes);
   for (int y = 0; y < rgba.height; y += kBandRows) {
     const int rows = std::min(kBandRows, rgba.height - y);
@@ -90,6 +92,11 @@ bool writeBands(OIIO::ImageOutput& output, const OIIO::ImageSpec& spec, const Im
         const float v = rgba.type == SampleType::Half ? float(halfColour[4 * i + c])
                                                       : floatColour[4 * i + c];
         to = storeAs(types[c], v, to);
+      }
+      if (extra.isPacked()) {
+        std::memcpy(to, &extra.packed.bytes[i * packedBytes], packedBytes);
+        to += packedBytes;
+        continue;
       }
       const float* more = &extra.image.pixels[i * extraCount];
       for (std::size_t c = 0; c < extraCount; ++c) to = storeAs(types[4 + c], more[c], to);
@@ -186,13 +193,26 @@ void writeView(const std::string& path, const ImageView& rgba, const OIIO::Image
   if (rgba.channels != 4 || !rgba) {
     throw Error("the image to write must have 4 channels (RGBA) and pixels", context);
   }
-  if (!extra.names.empty() &&
-      (int(extra.names.size()) != extra.image.channels || extra.image.width != rgba.width ||
-       extra.image.height != rgba.height)) {
-    throw Error("extra channels must match their names and the image size", context);
-  }
   if (!extra.formats.empty() && extra.formats.size() != extra.names.size()) {
     throw Error("extra channel formats must match their names", context);
+  }
+  if (extra.isPacked()) {
+    std::size_t pixelBytes = 0;
+    for (const OIIO::TypeDesc& format : extra.formats) {
+      if (format != OIIO::TypeHalf && format != OIIO::TypeFloat) {
+        throw Error("packed extra channels must be half or float", context);
+      }
+      pixelBytes += format.size();
+    }
+    if (extra.formats.empty() || extra.packed.width != rgba.width ||
+        extra.packed.height != rgba.height ||
+        extra.packed.bytes.size() != pixelBytes * std::size_t(rgba.width) * rgba.height) {
+      throw Error("packed extra channels must match their formats and the image size", context);
+    }
+  } else if (!extra.names.empty() &&
+             (int(extra.names.size()) != extra.image.channels ||
+              extra.image.width != rgba.width || extra.image.height != rgba.height)) {
+    throw Error("extra channels must match their names and the image size", context);
   }
   if (colorNames(options).size() != 4) {
     throw Error("the output needs 4 color channel names, " +
@@ -262,12 +282,36 @@ PixelType parsePixelType(const std::string& text) {
   throw Error("unknown pixel type \"" + text + "\" (expected half, float or input)");
 }
 
+void unpackExtraChannels(ExtraChannels& extra) {
+  if (!extra.isPacked()) return;
+  const std::size_t channels = extra.names.size();
+  extra.image = Image(extra.packed.width, extra.packed.height, int(channels));
+  const unsigned char* from = extra.packed.bytes.data();
+  for (std::size_t i = 0, n = extra.image.pixels.size() / channels; i < n; ++i) {
+    for (std::size_t c = 0; c < channels; ++c) {
+      if (extra.formats[c] == OIIO::TypeHalf) {
+        Imath::half h;
+        std::memcpy(&h, from, sizeof h);
+        extra.image.pixels[i * channels + c] = h;
+        from += sizeof h;
+      } else {
+        std::memcpy(&extra.image.pixels[i * channels + c], from, sizeof(float));
+        from += sizeof(float);
+      }
+    }
+  }
+  extra.packed = ExtraChannels::Packed();
+}
+
 void appendExtraChannels(ExtraChannels& extra, ExtraChannels more) {
   if (more.names.empty()) return;
   if (extra.names.empty()) {
     extra = std::move(more);
     return;
   }
+  // Rare (pass-through or diagnostics beside packed passes): joined as float.
+  unpackExtraChannels(extra);
+  unpackExtraChannels(more);
   const int channels = extra.image.channels + more.image.channels;
   Image joined(extra.image.width, extra.image.height, channels);
   for (std::size_t i = 0, n = std::size_t(joined.width) * joined.height; i < n; ++i) {

@@ -37,10 +37,24 @@ struct ExtraChannels {
   Image image;  // same size as the RGBA image; empty: none
   std::vector<OIIO::TypeDesc> formats;  // per name (pass-through keeps its type); empty: the
                                         // color's pixel type
+  // Instead of `image` (which is then empty): every pixel's channels packed one after another
+  // in their `formats` (half or float), as the file lays them out. A render's every pass held
+  // so takes 190 bytes a pixel instead of 268 as float while it waits to be written.
+  struct Packed {
+    int width = 0, height = 0;
+    FrameVector<unsigned char> bytes;
+  } packed;
+
+  bool isPacked() const { return !packed.bytes.empty(); }
 };
 
+// `extra`'s packed channels (ExtraChannels::packed) as float in `image`; nothing when it is not
+// packed.
+void unpackExtraChannels(ExtraChannels& extra);
+
 // Appends `more`'s channels after `extra`'s (same image size, or `extra` empty: then `more` is
-// moved in, not copied, which matters for a render's every pass).
+// moved in, not copied, packed or not, which matters for a render's every pass; packed
+// channels joined with others are unpacked first).
 void appendExtraChannels(ExtraChannels& extra, ExtraChannels more);
 
 // "half" | "float" | "input"; otherwise throws taa::Error.

@@ -1,8 +1,11 @@
 #include "resolve/pass_plan.h"
 
+#include <Imath/half.h>
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstring>
 #include <map>
 
 #include "taa/error.h"
@@ -195,56 +198,90 @@ PackedPasses packPasses(const Image& passes, const PassPlan& plan) {
   return packed;
 }
 
+namespace {
+
+// Pixel i's channels (plan.names' order) into `target`, from the sums, Cryptomatte ranks and
+// frame t's kept channels (see finishPasses).
+void finishPixel(std::size_t i, const std::vector<Image>& sums,
+                 const std::vector<Image>& cryptomatte, const Image& kept, const PassPlan& plan,
+                 float* target) {
+  const std::size_t stride = plan.names.size();
+  const std::size_t keptStride = std::size_t(plan.keptCount);
+  constexpr float kHalfMax = 65504.0f;
+  for (std::size_t c = 0; c < stride; ++c) {
+    const int value = plan.value[c];
+    if (value < 0) {  // kept, or Cryptomatte (written below)
+      if (plan.kept[c] >= 0) target[c] = kept.pixels[i * keptStride + std::size_t(plan.kept[c])];
+      continue;
+    }
+    float v = sums[std::size_t(value / 4)].pixels[4 * i + std::size_t(value % 4)];
+    const int factor = plan.factor[c];
+    if (factor >= 0) {
+      // Light = (light x factor) / factor, as the renderer divides its sums; where no
+      // sample had any factor (black albedo) the light is 0, as Cycles writes it.
+      const int fv = plan.value[std::size_t(factor)];
+      const float f = sums[std::size_t(fv / 4)].pixels[4 * i + std::size_t(fv % 4)];
+      v = f != 0.0f ? v / f : 0.0f;
+    }
+    // A half channel holds what half can: a quotient of sums may pass 65504 (negative factors).
+    target[c] = plan.formats[c] == OIIO::TypeHalf ? std::clamp(v, -kHalfMax, kHalfMax) : v;
+  }
+  // Cryptomatte: the resolve's three rank layers into the set's layers (more layers are 0).
+  for (std::size_t s = 0; s < plan.cryptomatte.size(); ++s) {
+    const PassPlan::CryptomatteSet& set = plan.cryptomatte[s];
+    for (std::size_t layer = 0; layer < set.layers.size(); ++layer) {
+      for (std::size_t k = 0; k < 4; ++k) {
+        target[std::size_t(set.layers[layer][k])] =
+            layer < 3 ? cryptomatte[3 * s + layer].pixels[4 * i + k] : 0.0f;
+      }
+    }
+  }
+  for (int x : plan.normalX) {
+    float* n = &target[std::size_t(x)];
+    const float length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    if (length > 0.0f) {
+      for (int k = 0; k < 3; ++k) n[k] /= length;
+    }
+  }
+}
+
+}  // namespace
+
 Image finishPasses(const std::vector<Image>& sums, const std::vector<Image>& cryptomatte,
                    const Image& kept, const PassPlan& plan) {
   const int width = sums.empty() ? kept.width : sums.front().width;
   const int height = sums.empty() ? kept.height : sums.front().height;
   Image out(width, height, int(plan.names.size()));
   const std::size_t pixels = std::size_t(width) * std::size_t(height);
-  const std::size_t stride = plan.names.size();
-  const std::size_t keptStride = std::size_t(plan.keptCount);
-  constexpr float kHalfMax = 65504.0f;
-  std::vector<bool> halfChannel(stride);
-  for (std::size_t c = 0; c < stride; ++c) halfChannel[c] = plan.formats[c] == OIIO::TypeHalf;
   for (std::size_t i = 0; i < pixels; ++i) {
-    float* target = &out.pixels[i * stride];
-    for (std::size_t c = 0; c < stride; ++c) {
-      const int value = plan.value[c];
-      if (value < 0) {  // kept, or Cryptomatte (written below)
-        if (plan.kept[c] >= 0) target[c] = kept.pixels[i * keptStride + std::size_t(plan.kept[c])];
-        continue;
-      }
-      float v = sums[std::size_t(value / 4)].pixels[4 * i + std::size_t(value % 4)];
-      const int factor = plan.factor[c];
-      if (factor >= 0) {
-        // Light = (light x factor) / factor, as the renderer divides its sums; where no
-        // sample had any factor (black albedo) the light is 0, as Cycles writes it.
-        const int fv = plan.value[std::size_t(factor)];
-        const float f = sums[std::size_t(fv / 4)].pixels[4 * i + std::size_t(fv % 4)];
-        v = f != 0.0f ? v / f : 0.0f;
-      }
-      // A half channel holds what half can: a quotient of sums may pass 65504 (negative factors).
-      target[c] = halfChannel[c] ? std::clamp(v, -kHalfMax, kHalfMax) : v;
-    }
+    finishPixel(i, sums, cryptomatte, kept, plan, &out.pixels[i * plan.names.size()]);
   }
-  // Cryptomatte: the resolve's three rank layers into the set's layers (more layers are 0).
-  for (std::size_t s = 0; s < plan.cryptomatte.size(); ++s) {
-    const PassPlan::CryptomatteSet& set = plan.cryptomatte[s];
-    for (std::size_t layer = 0; layer < set.layers.size(); ++layer) {
-      for (std::size_t i = 0; i < pixels; ++i) {
-        for (std::size_t k = 0; k < 4; ++k) {
-          out.pixels[i * stride + std::size_t(set.layers[layer][k])] =
-              layer < 3 ? cryptomatte[3 * s + layer].pixels[4 * i + k] : 0.0f;
-        }
-      }
-    }
-  }
-  for (int x : plan.normalX) {
-    for (std::size_t i = 0; i < pixels; ++i) {
-      float* n = &out.pixels[i * stride + std::size_t(x)];
-      const float length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-      if (length > 0.0f) {
-        for (int k = 0; k < 3; ++k) n[k] /= length;
+  return out;
+}
+
+io::ExtraChannels::Packed finishPassesPacked(const std::vector<Image>& sums,
+                                             const std::vector<Image>& cryptomatte,
+                                             const Image& kept, const PassPlan& plan) {
+  io::ExtraChannels::Packed out;
+  out.width = sums.empty() ? kept.width : sums.front().width;
+  out.height = sums.empty() ? kept.height : sums.front().height;
+  std::size_t pixelBytes = 0;
+  for (const OIIO::TypeDesc& format : plan.formats) pixelBytes += format.size();
+  const std::size_t pixels = std::size_t(out.width) * std::size_t(out.height);
+  out.bytes.resize(pixels * pixelBytes);
+  std::vector<float> values(plan.names.size());
+  unsigned char* to = out.bytes.data();
+  for (std::size_t i = 0; i < pixels; ++i) {
+    finishPixel(i, sums, cryptomatte, kept, plan, values.data());
+    for (std::size_t c = 0; c < values.size(); ++c) {
+      // As the writer narrows a float channel to half (io/exr_writer's storeAs).
+      if (plan.formats[c] == OIIO::TypeHalf) {
+        const Imath::half h(values[c]);
+        std::memcpy(to, &h, sizeof h);
+        to += sizeof h;
+      } else {
+        std::memcpy(to, &values[c], sizeof(float));
+        to += sizeof(float);
       }
     }
   }

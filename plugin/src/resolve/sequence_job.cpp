@@ -679,9 +679,11 @@ void runWindow(JobRun& run, gl::Context& context) {
     views.erase(views.begin());
     io::ExtraChannels passes = std::move(data.passes);
     if (passPlan && !passPlan->empty()) {
-      // The passes in the file's order and types, after the colour.
-      passes.image = finishPasses(resolver.lastPasses(), resolver.lastCryptomatte(), passes.image,
-                                  *passPlan);
+      // The passes in the file's order and types, after the colour; packed in those types
+      // while they wait to be written.
+      passes.packed = finishPassesPacked(resolver.lastPasses(), resolver.lastCryptomatte(),
+                                         passes.image, *passPlan);
+      passes.image = Image();
     }
     io::ExtraChannels debug;
     if (job.debugLayers) debug = windowDebugChannels(resolver.lastDebug(), data.nonFiniteMask);
