@@ -265,8 +265,12 @@ io::ExtraChannels::Packed finishPassesPacked(const std::vector<Image>& sums,
   io::ExtraChannels::Packed out;
   out.width = sums.empty() ? kept.width : sums.front().width;
   out.height = sums.empty() ? kept.height : sums.front().height;
+  // Half or float (planPasses' formats); not TypeDesc::size(), which lives in OIIO's library
+  // and would make the OpenFX bundle (which links this file, not OIIO) need it.
   std::size_t pixelBytes = 0;
-  for (const OIIO::TypeDesc& format : plan.formats) pixelBytes += format.size();
+  for (const OIIO::TypeDesc& format : plan.formats) {
+    pixelBytes += format == OIIO::TypeHalf ? sizeof(Imath::half) : sizeof(float);
+  }
   const std::size_t pixels = std::size_t(out.width) * std::size_t(out.height);
   out.bytes.resize(pixels * pixelBytes);
   std::vector<float> values(plan.names.size());

@@ -680,10 +680,20 @@ void runWindow(JobRun& run, gl::Context& context) {
     io::ExtraChannels passes = std::move(data.passes);
     if (passPlan && !passPlan->empty()) {
       // The passes in the file's order and types, after the colour; packed in those types
-      // while they wait to be written.
-      passes.packed = finishPassesPacked(resolver.lastPasses(), resolver.lastCryptomatte(),
-                                         passes.image, *passPlan);
-      passes.image = Image();
+      // while they wait to be written when all are half or float (a uint channel goes the
+      // float way, as before).
+      const bool halfOrFloat =
+          std::all_of(passPlan->formats.begin(), passPlan->formats.end(), [](OIIO::TypeDesc t) {
+            return t == OIIO::TypeHalf || t == OIIO::TypeFloat;
+          });
+      if (halfOrFloat) {
+        passes.packed = finishPassesPacked(resolver.lastPasses(), resolver.lastCryptomatte(),
+                                           passes.image, *passPlan);
+        passes.image = Image();
+      } else {
+        passes.image = finishPasses(resolver.lastPasses(), resolver.lastCryptomatte(),
+                                    passes.image, *passPlan);
+      }
     }
     io::ExtraChannels debug;
     if (job.debugLayers) debug = windowDebugChannels(resolver.lastDebug(), data.nonFiniteMask);
