@@ -352,7 +352,8 @@ TEST_F(PassesTest, TheCApiNodeResolvesThePassesAsTaatoolDoes) {
   taa_node* node = nullptr;
   ASSERT_EQ(taa_node_create(nullptr, &node), TAA_OK) << taa_last_error();
   ASSERT_EQ(taa_node_set_string(node, "mode", "window"), TAA_OK) << taa_node_last_error(node);
-  for (int f = 1; f <= kFrames; ++f) {
+  // Frame f as the host pushes it: colour, depth, motion and the header's camera.
+  const auto frameOf = [&frames](int f) {
     HostFrame& h = frames[std::size_t(f - 1)];
     taa_frame frame;
     taa_frame_init(&frame);
@@ -364,6 +365,11 @@ TEST_F(PassesTest, TheCApiNodeResolvesThePassesAsTaatoolDoes) {
       frame.world_to_camera = h.toCamera.data();
       frame.world_to_ndc = h.toNdc.data();
     }
+    return frame;
+  };
+  for (int f = 1; f <= kFrames; ++f) {
+    const HostFrame& h = frames[std::size_t(f - 1)];
+    const taa_frame frame = frameOf(f);
     ASSERT_EQ(taa_node_push_frame_passes(node, &frame, h.passes.data(), int(h.passes.size())),
               TAA_OK)
         << taa_node_last_error(node);
@@ -396,20 +402,22 @@ TEST_F(PassesTest, TheCApiNodeResolvesThePassesAsTaatoolDoes) {
 
   // Frame 3 pushed again without passes: the frames pushed with them leave the ring, and a
   // window that needs one says so.
-  taa_frame again;
-  taa_frame_init(&again);
-  again.frame = f;
-  again.color = &h.color;
-  again.depth = &h.depthBuffer;
-  again.motion = &h.motionBuffer;
-  if (!h.toCamera.empty() && !h.toNdc.empty()) {
-    again.world_to_camera = h.toCamera.data();
-    again.world_to_ndc = h.toNdc.data();
-  }
+  const taa_frame again = frameOf(f);
   ASSERT_EQ(taa_node_push_frame(node, &again), TAA_OK) << taa_node_last_error(node);
   EXPECT_EQ(taa_node_resolve_frame(node, f), TAA_ERROR_MISSING_FRAME);
   EXPECT_NE(std::string(taa_node_last_error(node)).find("pushed with other passes"),
             std::string::npos)
+      << taa_node_last_error(node);
+
+  // The "aov" parameter takes taatool's rules separated by ';' and names itself when one is bad.
+  EXPECT_EQ(taa_node_set_string(node, "aov", "Emit.*=copy;;*=drop"), TAA_OK)
+      << taa_node_last_error(node);
+  EXPECT_EQ(taa_node_set_string(node, "aov", "Emit.*=copy;Emit.*=albedo"),
+            TAA_ERROR_INVALID_ARGUMENT);
+  EXPECT_NE(std::string(taa_node_last_error(node)).find("parameter \"aov\": "),
+            std::string::npos)
+      << taa_node_last_error(node);
+  EXPECT_NE(std::string(taa_node_last_error(node)).find("albedo"), std::string::npos)
       << taa_node_last_error(node);
 
   // A pass it was not given; passes in history mode.

@@ -5,6 +5,8 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <sstream>
+#include <string>
 #include <vector>
 
 #include "capi/status_error.h"
@@ -242,19 +244,15 @@ const std::vector<std::pair<std::string, InputParameter>>& inputParameterList() 
                        [](const NodeParameters& p) { return p.passRulesText; },
                        [](NodeParameters& p, const std::string& v) {
                          std::vector<io::ChannelKindRule> rules;
-                         std::size_t start = 0;
-                         while (start <= v.size() && !v.empty()) {
-                           const std::size_t end = std::min(v.find(';', start), v.size());
-                           const std::string rule = v.substr(start, end - start);
-                           if (!rule.empty()) {
-                             try {
-                               rules.push_back(io::parseChannelKindRule(rule));
-                             } catch (const Error& e) {
-                               throw StatusError(TAA_ERROR_INVALID_ARGUMENT,
-                                                 std::string("parameter \"aov\": ") + e.what());
-                             }
+                         std::istringstream text(v);
+                         for (std::string rule; std::getline(text, rule, ';');) {
+                           if (rule.empty()) continue;
+                           try {
+                             rules.push_back(io::parseChannelKindRule(rule));
+                           } catch (const Error& e) {
+                             throw StatusError(TAA_ERROR_INVALID_ARGUMENT,
+                                               std::string("parameter \"aov\": ") + e.what());
                            }
-                           start = end + 1;
                          }
                          p.passRules = std::move(rules);
                          p.passRulesText = v;
