@@ -201,7 +201,7 @@ TEST(WriteExrAtomic, ExtraChannelsKeepTheirTypesAndValuesAcrossBands) {
 // the wrong size is refused.
 TEST(WriteExrAtomic, PackedExtraChannelsAreWrittenAsGivenAndJoinAsFloat) {
   const std::string folder = scratchFolder();
-  constexpr int kWidth = 5, kHeight = 300;  // two bands
+  constexpr int kWidth = 5, kHeight = 300;  // ten bands of zip's 32 rows
   const OIIO::ImageSpec templateSpec = makeSpec(kWidth, kHeight, {"R", "G", "B", "A"});
   const Image rgba = makeRgba(kWidth, kHeight, [](int p, int c) { return 0.25f * float(p + c); });
   const std::size_t pixels = std::size_t(kWidth) * kHeight;
@@ -238,6 +238,29 @@ TEST(WriteExrAtomic, PackedExtraChannelsAreWrittenAsGivenAndJoinAsFloat) {
   EXPECT_FALSE(joined.isPacked());
   writeExrAtomic(folder + "/joined.exr", rgba, templateSpec, {PixelType::Half, "zip"}, joined);
   check(folder + "/joined.exr", 7);
+
+  // Packed on demand, a band at a time: the writer asks for every pixel once, in order.
+  ExtraChannels onDemand = packed;
+  onDemand.packed.bytes.clear();
+  std::vector<std::pair<std::size_t, std::size_t>> asked;
+  onDemand.packed.rows = [&](std::size_t first, std::size_t count, unsigned char* to,
+                              std::size_t stride) {
+    asked.emplace_back(first, count);
+    for (std::size_t n = 0; n < count; ++n) {
+      std::memcpy(to + n * stride, &packed.packed.bytes[6 * (first + n)], 6);
+    }
+  };
+  writeExrAtomic(folder + "/on-demand.exr", rgba, templateSpec, {PixelType::Half, "zip"},
+                 onDemand);
+  check(folder + "/on-demand.exr", 6);
+  ASSERT_EQ(asked.size(), 10u);  // 300 rows of zip: nine bands of 32 rows and one of 12
+  EXPECT_EQ(asked[0], std::make_pair(std::size_t(0), std::size_t(32) * kWidth));
+  EXPECT_EQ(asked[9], std::make_pair(std::size_t(288) * kWidth, std::size_t(12) * kWidth));
+  ExtraChannels onDemandJoined = onDemand;
+  appendExtraChannels(onDemandJoined, debug);
+  writeExrAtomic(folder + "/on-demand-joined.exr", rgba, templateSpec, {PixelType::Half, "zip"},
+                 onDemandJoined);
+  check(folder + "/on-demand-joined.exr", 7);
 
   ExtraChannels wrong = packed;
   wrong.packed.bytes.resize(pixels * 6 - 1);

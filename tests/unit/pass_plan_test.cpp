@@ -78,13 +78,15 @@ TEST(PassPlan, ProductsAreSummedAndDividedAndNormalsRenormalised) {
   const PackedPasses pa = packPasses(a, floatPlan), pb = packPasses(b, floatPlan);
   const std::vector<TypedImage>&ga = pa.groups, &gb = pb.groups;
   ASSERT_EQ(ga[0].type(), SampleType::Float);
-  std::vector<Image> sums(2, Image(1, 1, 4));
+  PassSums sums;
   for (int g = 0; g < 2; ++g) {
+    Image sum(1, 1, 4);
     for (int c = 0; c < 4; ++c) {
-      sums[g].pixels[c] = 0.5f * (ga[g].floats()->pixels[c] + gb[g].floats()->pixels[c]);
+      sum.pixels[c] = 0.5f * (ga[g].floats()->pixels[c] + gb[g].floats()->pixels[c]);
     }
+    sums.groups.emplace_back(std::move(sum));
   }
-  const Image out = finishPasses(sums, {}, pa.kept, floatPlan);
+  const Image out = finishPasses(sums, pa.kept, floatPlan);
   const float light = 0.5f * (0.2f * 0.5f + 0.6f * 1.0f);
   EXPECT_FLOAT_EQ(out.pixels[1], 0.75f);
   EXPECT_FLOAT_EQ(out.pixels[0] * out.pixels[1], light);

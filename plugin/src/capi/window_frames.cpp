@@ -195,8 +195,7 @@ TypedImage WindowFrames::resolve(int frame, SampleType outputType) {
     TypedImage output = resolver_->resolve(frame, window.first, window.last, outputType);
     resolvedPasses_ = Image();
     if (passPlan_ && !passPlan_->empty()) {
-      resolvedPasses_ = finishPasses(resolver_->lastPasses(), resolver_->lastCryptomatte(),
-                                     keptPasses_.at(frame), *passPlan_);
+      resolvedPasses_ = finishPasses(resolver_->takePassSums(), keptPasses_.at(frame), *passPlan_);
     }
     return output;
   } catch (const Error& e) {

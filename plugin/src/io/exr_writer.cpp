@@ -10,6 +10,7 @@
 #include <Imath/half.h>
 #include <OpenImageIO/filesystem.h>
 
+#include "io/scanline_bands.h"
 #include "io/temporary_file.h"
 #include "taa/error.h"
 
@@ -51,11 +52,6 @@ bool isNumber(const std::string& text) {
   return end == text.c_str() + text.size() && value >= 0.0;
 }
 
-// Rows packed and handed to the encoder at a time: a whole number of every scanline codec's
-// chunks (DWAB's are 256 rows), and small beside a frame (256 rows of 1920 pixels of a
-// render's 75 channels in their own types: about 70 MB less than the frame interleaved as float).
-constexpr int kBandRows = 256;
-
 // Stores `value` at `to` as the file's type of that channel.
 inline unsigned char* storeAs(OIIO::TypeDesc type, float value, unsigned char* to) {
   if (type == OIIO::TypeHalf) {
@@ -82,10 +78,19 @@ bool writeBands(OIIO::ImageOutput& output, const OIIO::ImageSpec& spec, const Im
   const std::size_t extraCount = std::size_t(extra.image.channels);
   std::size_t packedBytes = 0;  // a pixel's packed extra channels (ExtraChannels::packed)
   for (int c = 4; c < spec.nchannels; ++c) packedBytes += spec.channelformat(c).size();
-  std::vector<unsigned char> band(std::size_t(kBandRows) * width * pixelBytes);
-  for (int y = 0; y < rgba.height; y += kBandRows) {
-    const int rows = std::min(kBandRows, rgba.height - y);
+  // A band of rows at a time (io/scanline_bands): 32 rows of a render's every pass at 1920
+  // pixels in their own types are 12 MB, where a frame interleaved as float would be 590.
+  const int bandRows = rowsPerBand(spec);
+  std::vector<unsigned char> band(std::size_t(bandRows) * width * pixelBytes);
+  for (int y = 0; y < rgba.height; y += bandRows) {
+    const int rows = std::min(bandRows, rgba.height - y);
     unsigned char* to = band.data();
+    if (extra.packed.rows) {
+      // Packed on demand (ExtraChannels::Packed::rows): straight into the band, after each
+      // pixel's colour.
+      extra.packed.rows(std::size_t(y) * width, std::size_t(rows) * width,
+                        band.data() + (pixelBytes - packedBytes), pixelBytes);
+    }
     for (std::size_t i = std::size_t(y) * width, end = i + std::size_t(rows) * width; i < end;
          ++i) {
       for (std::size_t c = 0; c < 4; ++c) {
@@ -94,7 +99,7 @@ bool writeBands(OIIO::ImageOutput& output, const OIIO::ImageSpec& spec, const Im
         to = storeAs(types[c], v, to);
       }
       if (extra.isPacked()) {
-        std::memcpy(to, &extra.packed.bytes[i * packedBytes], packedBytes);
+        if (!extra.packed.rows) std::memcpy(to, &extra.packed.bytes[i * packedBytes], packedBytes);
         to += packedBytes;
         continue;
       }
@@ -206,7 +211,8 @@ void writeView(const std::string& path, const ImageView& rgba, const OIIO::Image
     }
     if (extra.formats.empty() || extra.packed.width != rgba.width ||
         extra.packed.height != rgba.height ||
-        extra.packed.bytes.size() != pixelBytes * std::size_t(rgba.width) * rgba.height) {
+        (!extra.packed.rows &&
+         extra.packed.bytes.size() != pixelBytes * std::size_t(rgba.width) * rgba.height)) {
       throw Error("packed extra channels must match their formats and the image size", context);
     }
   } else if (!extra.names.empty() &&
@@ -285,6 +291,13 @@ PixelType parsePixelType(const std::string& text) {
 void unpackExtraChannels(ExtraChannels& extra) {
   if (!extra.isPacked()) return;
   const std::size_t channels = extra.names.size();
+  if (extra.packed.rows) {
+    std::size_t pixelBytes = 0;
+    for (const OIIO::TypeDesc& format : extra.formats) pixelBytes += format.size();
+    const std::size_t pixels = std::size_t(extra.packed.width) * std::size_t(extra.packed.height);
+    extra.packed.bytes.resize(pixels * pixelBytes);
+    extra.packed.rows(0, pixels, extra.packed.bytes.data(), pixelBytes);
+  }
   extra.image = Image(extra.packed.width, extra.packed.height, int(channels));
   const unsigned char* from = extra.packed.bytes.data();
   for (std::size_t i = 0, n = extra.image.pixels.size() / channels; i < n; ++i) {

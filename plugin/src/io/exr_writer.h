@@ -4,6 +4,7 @@
 
 #include <OpenImageIO/imageio.h>
 
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -43,9 +44,15 @@ struct ExtraChannels {
   struct Packed {
     int width = 0, height = 0;
     FrameVector<unsigned char> bytes;
+    // Or, instead of `bytes`: packs pixels [first, first + count) (rows top first), pixel
+    // first + n at to + n * stride, when the writer reaches them, a band at a time, so the
+    // packed frame is never held whole.
+    std::function<void(std::size_t first, std::size_t count, unsigned char* to,
+                       std::size_t stride)>
+        rows;
   } packed;
 
-  bool isPacked() const { return !packed.bytes.empty(); }
+  bool isPacked() const { return !packed.bytes.empty() || bool(packed.rows); }
 };
 
 // `extra`'s packed channels (ExtraChannels::packed) as float in `image`; nothing when it is not

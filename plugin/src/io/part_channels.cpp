@@ -7,21 +7,11 @@
 #include <cstring>
 
 #include "taa/error.h"
+#include "io/scanline_bands.h"
 #include "util/frame_buffer_pool.h"
 
 namespace taa::io {
 namespace {
-
-// Rows decoded at a time: a whole number of chunks, so no chunk is decoded twice, and few
-// enough that the band stays small (64 rows of 1920 pixels of 7 channels: 3.4 MB).
-int rowsPerBand(const OIIO::ImageSpec& spec) {
-  constexpr int kRows = 64;  // a multiple of every scanline codec's chunk height but DWAB's
-  if (spec.tile_height > 0) {
-    return (kRows + spec.tile_height - 1) / spec.tile_height * spec.tile_height;
-  }
-  const std::string compression = spec.get_string_attribute("compression");
-  return compression.rfind("dwab", 0) == 0 ? 256 : kRows;
-}
 
 bool halfOrFloat(OIIO::TypeDesc type) {
   return type == OIIO::TypeHalf || type == OIIO::TypeFloat;

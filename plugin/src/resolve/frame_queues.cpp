@@ -51,6 +51,8 @@ io::FrameData ReadAhead::next() {
   return front.get();
 }
 
+void ReadAhead::setDepth(int depth) { depth_ = std::max(0, depth); }
+
 WriteBehind::WriteBehind(int depth, std::function<void(int)> done)
     : depth_(std::max(0, depth)), done_(std::move(done)) {}
 
@@ -66,6 +68,8 @@ void WriteBehind::push(std::function<void()> write, int index) {
     finishOldest();
   }
 }
+
+void WriteBehind::setDepth(int depth) { depth_ = std::max(0, depth); }
 
 void WriteBehind::finishOldest() {
   auto [future, index] = std::move(pending_.front());

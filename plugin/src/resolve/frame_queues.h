@@ -26,6 +26,8 @@ class ReadAhead {
   int peek() const { return frames_[taken_]; }
   // The next frame in order; a failed read throws here, when its turn comes.
   io::FrameData next();
+  // Reads started from now on go up to `depth` ahead.
+  void setDepth(int depth);
 
  private:
   void fill();
@@ -46,6 +48,8 @@ class WriteBehind {
   WriteBehind& operator=(const WriteBehind&) = delete;
 
   void push(std::function<void()> write, int index);
+  // Writes pushed from now on: up to `depth` running.
+  void setDepth(int depth);
   // Waits for every write; the first failure throws.
   void finish();
 

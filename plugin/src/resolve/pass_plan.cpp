@@ -7,6 +7,8 @@
 #include <cmath>
 #include <cstring>
 #include <map>
+#include <memory>
+#include <tuple>
 
 #include "taa/error.h"
 
@@ -200,95 +202,131 @@ PackedPasses packPasses(const Image& passes, const PassPlan& plan) {
 
 namespace {
 
-// Pixel i's channels (plan.names' order) into `target`, from the sums, Cryptomatte ranks and
-// frame t's kept channels (see finishPasses).
-void finishPixel(std::size_t i, const std::vector<Image>& sums,
-                 const std::vector<Image>& cryptomatte, const Image& kept, const PassPlan& plan,
-                 float* target) {
-  const std::size_t stride = plan.names.size();
-  const std::size_t keptStride = std::size_t(plan.keptCount);
-  constexpr float kHalfMax = 65504.0f;
-  for (std::size_t c = 0; c < stride; ++c) {
-    const int value = plan.value[c];
-    if (value < 0) {  // kept, or Cryptomatte (written below)
-      if (plan.kept[c] >= 0) target[c] = kept.pixels[i * keptStride + std::size_t(plan.kept[c])];
-      continue;
+// Finishes pixels of one frame: where each channel's values are, decided once per frame so
+// that a pixel's work is loads, a division and stores.
+class PassFinisher {
+ public:
+  PassFinisher(const PassSums& sums, const Image& kept, const PassPlan& plan)
+      : sums_(sums), kept_(kept), plan_(plan) {
+    for (const TypedImage& group : sums.groups) {
+      halfSums_.push_back(group.halves() ? group.halves()->pixels.data() : nullptr);
+      floatSums_.push_back(group.floats() ? group.floats()->pixels.data() : nullptr);
     }
-    float v = sums[std::size_t(value / 4)].pixels[4 * i + std::size_t(value % 4)];
-    const int factor = plan.factor[c];
-    if (factor >= 0) {
-      // Light = (light x factor) / factor, as the renderer divides its sums; where no
-      // sample had any factor (black albedo) the light is 0, as Cycles writes it.
-      const int fv = plan.value[std::size_t(factor)];
-      const float f = sums[std::size_t(fv / 4)].pixels[4 * i + std::size_t(fv % 4)];
-      v = f != 0.0f ? v / f : 0.0f;
-    }
-    // A half channel holds what half can: a quotient of sums may pass 65504 (negative factors).
-    target[c] = plan.formats[c] == OIIO::TypeHalf ? std::clamp(v, -kHalfMax, kHalfMax) : v;
+    for (const OIIO::TypeDesc& format : plan.formats) halfChannel_.push_back(format == OIIO::TypeHalf);
   }
-  // Cryptomatte: the resolve's three rank layers into the set's layers (more layers are 0).
-  for (std::size_t s = 0; s < plan.cryptomatte.size(); ++s) {
-    const PassPlan::CryptomatteSet& set = plan.cryptomatte[s];
-    for (std::size_t layer = 0; layer < set.layers.size(); ++layer) {
-      for (std::size_t k = 0; k < 4; ++k) {
-        target[std::size_t(set.layers[layer][k])] =
-            layer < 3 ? cryptomatte[3 * s + layer].pixels[4 * i + k] : 0.0f;
+
+  // Pixel i's channels (plan.names' order) into `target`.
+  void pixel(std::size_t i, float* target) const {
+    const std::size_t stride = plan_.names.size();
+    const std::size_t keptStride = std::size_t(plan_.keptCount);
+    constexpr float kHalfMax = 65504.0f;
+    for (std::size_t c = 0; c < stride; ++c) {
+      const int value = plan_.value[c];
+      if (value < 0) {  // kept, or Cryptomatte (written below)
+        if (plan_.kept[c] >= 0) {
+          target[c] = kept_.pixels[i * keptStride + std::size_t(plan_.kept[c])];
+        }
+        continue;
+      }
+      float v = sum(value, i);
+      const int factor = plan_.factor[c];
+      if (factor >= 0) {
+        // Light = (light x factor) / factor, as the renderer divides its sums; where no
+        // sample had any factor (black albedo) the light is 0, as Cycles writes it.
+        const float f = sum(plan_.value[std::size_t(factor)], i);
+        v = f != 0.0f ? v / f : 0.0f;
+      }
+      // A half channel holds what half can: a quotient of sums may pass 65504 (negative factors).
+      target[c] = halfChannel_[c] ? std::clamp(v, -kHalfMax, kHalfMax) : v;
+    }
+    // Cryptomatte: the resolve's three rank layers into the set's layers (more layers are 0).
+    for (std::size_t s = 0; s < plan_.cryptomatte.size(); ++s) {
+      const PassPlan::CryptomatteSet& set = plan_.cryptomatte[s];
+      for (std::size_t layer = 0; layer < set.layers.size(); ++layer) {
+        for (std::size_t k = 0; k < 4; ++k) {
+          target[std::size_t(set.layers[layer][k])] =
+              layer < 3 ? sums_.cryptomatte[3 * s + layer].pixels[4 * i + k] : 0.0f;
+        }
+      }
+    }
+    for (int x : plan_.normalX) {
+      float* n = &target[std::size_t(x)];
+      const float length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+      if (length > 0.0f) {
+        for (int k = 0; k < 3; ++k) n[k] /= length;
       }
     }
   }
-  for (int x : plan.normalX) {
-    float* n = &target[std::size_t(x)];
-    const float length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-    if (length > 0.0f) {
-      for (int k = 0; k < 3; ++k) n[k] /= length;
+
+  // Pixels [first, first + count) packed in their file types (half or float), pixel first + n
+  // at pixels + n * stride.
+  void packed(std::size_t first, std::size_t count, unsigned char* pixels,
+              std::size_t stride) const {
+    std::vector<float> values(plan_.names.size());
+    for (std::size_t n = 0; n < count; ++n) {
+      pixel(first + n, values.data());
+      unsigned char* to = pixels + n * stride;
+      for (std::size_t c = 0; c < values.size(); ++c) {
+        // As the writer narrows a float channel to half (io/exr_writer's storeAs).
+        if (halfChannel_[c]) {
+          const Imath::half h(values[c]);
+          std::memcpy(to, &h, sizeof h);
+          to += sizeof h;
+        } else {
+          std::memcpy(to, &values[c], sizeof(float));
+          to += sizeof(float);
+        }
+      }
     }
   }
+
+ private:
+  float sum(int value, std::size_t i) const {
+    const std::size_t group = std::size_t(value / 4), at = 4 * i + std::size_t(value % 4);
+    return halfSums_[group] ? float(halfSums_[group][at]) : floatSums_[group][at];
+  }
+
+  const PassSums& sums_;
+  const Image& kept_;
+  const PassPlan& plan_;
+  std::vector<const Imath::half*> halfSums_;
+  std::vector<const float*> floatSums_;
+  std::vector<bool> halfChannel_;
+};
+
+std::pair<int, int> sizeOf(const PassSums& sums, const Image& kept) {
+  if (!sums.groups.empty()) return {sums.groups.front().width(), sums.groups.front().height()};
+  if (!sums.cryptomatte.empty()) return {sums.cryptomatte.front().width, sums.cryptomatte.front().height};
+  return {kept.width, kept.height};
 }
 
 }  // namespace
 
-Image finishPasses(const std::vector<Image>& sums, const std::vector<Image>& cryptomatte,
-                   const Image& kept, const PassPlan& plan) {
-  const int width = sums.empty() ? kept.width : sums.front().width;
-  const int height = sums.empty() ? kept.height : sums.front().height;
+Image finishPasses(const PassSums& sums, const Image& kept, const PassPlan& plan) {
+  const auto [width, height] = sizeOf(sums, kept);
   Image out(width, height, int(plan.names.size()));
+  const PassFinisher finisher(sums, kept, plan);
   const std::size_t pixels = std::size_t(width) * std::size_t(height);
   for (std::size_t i = 0; i < pixels; ++i) {
-    finishPixel(i, sums, cryptomatte, kept, plan, &out.pixels[i * plan.names.size()]);
+    finisher.pixel(i, &out.pixels[i * plan.names.size()]);
   }
   return out;
 }
 
-io::ExtraChannels::Packed finishPassesPacked(const std::vector<Image>& sums,
-                                             const std::vector<Image>& cryptomatte,
-                                             const Image& kept, const PassPlan& plan) {
+io::ExtraChannels::Packed finishPassesPacked(PassSums sums, Image kept, PassPlan plan) {
   io::ExtraChannels::Packed out;
-  out.width = sums.empty() ? kept.width : sums.front().width;
-  out.height = sums.empty() ? kept.height : sums.front().height;
-  // Half or float (planPasses' formats); not TypeDesc::size(), which lives in OIIO's library
-  // and would make the OpenFX bundle (which links this file, not OIIO) need it.
-  std::size_t pixelBytes = 0;
-  for (const OIIO::TypeDesc& format : plan.formats) {
-    pixelBytes += format == OIIO::TypeHalf ? sizeof(Imath::half) : sizeof(float);
-  }
-  const std::size_t pixels = std::size_t(out.width) * std::size_t(out.height);
-  out.bytes.resize(pixels * pixelBytes);
-  std::vector<float> values(plan.names.size());
-  unsigned char* to = out.bytes.data();
-  for (std::size_t i = 0; i < pixels; ++i) {
-    finishPixel(i, sums, cryptomatte, kept, plan, values.data());
-    for (std::size_t c = 0; c < values.size(); ++c) {
-      // As the writer narrows a float channel to half (io/exr_writer's storeAs).
-      if (plan.formats[c] == OIIO::TypeHalf) {
-        const Imath::half h(values[c]);
-        std::memcpy(to, &h, sizeof h);
-        to += sizeof h;
-      } else {
-        std::memcpy(to, &values[c], sizeof(float));
-        to += sizeof(float);
-      }
-    }
-  }
+  std::tie(out.width, out.height) = sizeOf(sums, kept);
+  // What the writer's band calls finish from, kept alive by them (a std::function is copied).
+  struct Inputs {
+    PassSums sums;
+    Image kept;
+    PassPlan plan;
+  };
+  auto inputs = std::make_shared<const Inputs>(Inputs{std::move(sums), std::move(kept), std::move(plan)});
+  out.rows = [inputs](std::size_t first, std::size_t count, unsigned char* to,
+                      std::size_t stride) {
+    PassFinisher(inputs->sums, inputs->kept, inputs->plan).packed(first, count, to, stride);
+  };
   return out;
 }
 

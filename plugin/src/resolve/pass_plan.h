@@ -82,15 +82,21 @@ void packPassRows(const float* values, std::size_t firstPixel, std::size_t count
 // A whole frame's pass channels (as read, plan.names' order) packed.
 PackedPasses packPasses(const Image& passes, const PassPlan& plan);
 
-// The resolved channels from the gather's sums (one RGBA image per group), its Cryptomatte
-// ranks (three RGBA images per set: id, coverage, id, coverage) and frame t's kept channels
-// (PackedPasses::kept): an image with `plan.names`' channels in their order.
-Image finishPasses(const std::vector<Image>& sums, const std::vector<Image>& cryptomatte,
-                   const Image& kept, const PassPlan& plan);
+// What a resolved frame's pass channels are made from: the gather's sums (one RGBA image a
+// group, half where the plan's group is: PassPlan::halfGroups) and its Cryptomatte ranks
+// (three RGBA images a set: id, coverage, id, coverage).
+struct PassSums {
+  std::vector<TypedImage> groups;
+  std::vector<Image> cryptomatte;
+};
+
+// The resolved channels from the sums and frame t's kept channels (PackedPasses::kept): an
+// image with `plan.names`' channels in their order.
+Image finishPasses(const PassSums& sums, const Image& kept, const PassPlan& plan);
 // The same channels packed in their file types (plan.formats, half or float) for the writer
-// (io::ExtraChannels::packed): 190 bytes a pixel for a render's every pass instead of 268.
-io::ExtraChannels::Packed finishPassesPacked(const std::vector<Image>& sums,
-                                             const std::vector<Image>& cryptomatte,
-                                             const Image& kept, const PassPlan& plan);
+// (io::ExtraChannels::Packed::rows): finished band by band as the writer reaches them, so a
+// frame's finished passes (190 bytes a pixel for a render's every pass) are never held whole;
+// what they are made from is held until then.
+io::ExtraChannels::Packed finishPassesPacked(PassSums sums, Image kept, PassPlan plan);
 
 }  // namespace taa

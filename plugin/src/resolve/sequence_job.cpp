@@ -234,7 +234,7 @@ void validateSequenceJob(const SequenceJob& job) {
                   {job.layout.color.pattern, frame, ""});
     }
   }
-  if (job.ioThreads < 0 || job.ioThreads > kMaxIoThreads) {
+  if ((job.ioThreads < 0 && job.ioThreads != kAutoIoThreads) || job.ioThreads > kMaxIoThreads) {
     throw Error("threads must be 0 to " + std::to_string(kMaxIoThreads) + ", got " +
                 std::to_string(job.ioThreads));
   }
@@ -509,8 +509,8 @@ void runHistory(JobRun& run, gl::Context& context) {
   }
   Resolver& resolver = *resolvers.front();
   std::vector<FrameReport> reports(job.frames.size());
-  ReadAhead reads(job.frames, job.ioThreads, [&run](int frame) { return run.read(frame); });
-  WriteBehind writes(job.ioThreads, [&](int index) {
+  ReadAhead reads(job.frames, ioDepthOf(job, false), [&run](int frame) { return run.read(frame); });
+  WriteBehind writes(ioDepthOf(job, false), [&](int index) {
     if (run.callbacks.frameDone) run.callbacks.frameDone(reports[std::size_t(index)]);
   });
   int lastWidth = 0, lastHeight = 0;
@@ -583,8 +583,9 @@ void runWindow(JobRun& run, gl::Context& context) {
   }
   WindowResolver& resolver = *resolvers.front();
   std::vector<FrameReport> reports(outputs.size());
-  ReadAhead reads(plan.reads, job.ioThreads, [&run](int frame) { return run.read(frame); });
-  WriteBehind writes(job.ioThreads, [&](int index) {
+  // Whether the frames carry passes is known once the first is read: until then, one read.
+  ReadAhead reads(plan.reads, 0, [&run](int frame) { return run.read(frame); });
+  WriteBehind writes(0, [&](int index) {
     if (run.callbacks.frameDone) run.callbacks.frameDone(reports[std::size_t(index)]);
   });
   std::map<int, io::FrameData> waiting;  // read output frames, pixels dropped once uploaded
@@ -620,6 +621,8 @@ void runWindow(JobRun& run, gl::Context& context) {
                               io::passRulesOf(*run.layouts.front()));
         passFile = data.colorPath;
         resolver.setPasses(passPlan->halfGroups, int(passPlan->cryptomatte.size()));
+        reads.setDepth(ioDepthOf(job, !passPlan->empty()));
+        writes.setDepth(ioDepthOf(job, !passPlan->empty()));
         if (run.callbacks.detail && !passPlan->empty()) {
           // One line a kind, the channels in file order: a render's every pass is 70 names.
           std::map<std::string, std::string> byKind;
@@ -679,20 +682,18 @@ void runWindow(JobRun& run, gl::Context& context) {
     views.erase(views.begin());
     io::ExtraChannels passes = std::move(data.passes);
     if (passPlan && !passPlan->empty()) {
-      // The passes in the file's order and types, after the colour; packed in those types
-      // while they wait to be written when all are half or float (a uint channel goes the
-      // float way, as before).
+      // The passes in the file's order and types, after the colour: finished from the sums
+      // band by band as the writer packs them when all are half or float (a uint channel goes
+      // the float way, as before).
       const bool halfOrFloat =
           std::all_of(passPlan->formats.begin(), passPlan->formats.end(), [](OIIO::TypeDesc t) {
             return t == OIIO::TypeHalf || t == OIIO::TypeFloat;
           });
       if (halfOrFloat) {
-        passes.packed = finishPassesPacked(resolver.lastPasses(), resolver.lastCryptomatte(),
-                                           passes.image, *passPlan);
+        passes.packed = finishPassesPacked(resolver.takePassSums(), std::move(passes.image), *passPlan);
         passes.image = Image();
       } else {
-        passes.image = finishPasses(resolver.lastPasses(), resolver.lastCryptomatte(),
-                                    passes.image, *passPlan);
+        passes.image = finishPasses(resolver.takePassSums(), passes.image, *passPlan);
       }
     }
     io::ExtraChannels debug;
@@ -704,6 +705,11 @@ void runWindow(JobRun& run, gl::Context& context) {
 }
 
 }  // namespace
+
+int ioDepthOf(const SequenceJob& job, bool passes) {
+  if (job.ioThreads != kAutoIoThreads) return job.ioThreads;
+  return passes && job.resolve.mode == ResolveMode::Window ? 0 : 2;
+}
 
 void runSequenceJob(const SequenceJob& job, const JobCallbacks& callbacks) {
   // Declared first, destroyed last: the job's frame buffers go back to the system (or to the

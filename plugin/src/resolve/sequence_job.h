@@ -59,11 +59,18 @@ struct SequenceJob {
   std::vector<std::string> outputChannels;
   // Frames read ahead and written behind on worker threads while the GL thread resolves (0: all
   // on the calling thread, one step after another). Output is identical either way. Each frame
-  // in flight holds its AOVs in memory: at most kMaxIoThreads.
-  int ioThreads = 2;
+  // in flight holds its AOVs in memory: at most kMaxIoThreads. kAutoIoThreads: see ioDepthOf.
+  int ioThreads = -1;
 };
 
 inline constexpr int kMaxIoThreads = 16;
+inline constexpr int kAutoIoThreads = -1;
+
+// The frames in flight for `job`: its ioThreads, or by default 2, and 0 where the window
+// resolve carries passes (`passes`): a 1080p frame with a render's every pass holds about
+// 0.4 GB as read and as written, and on few cores the reads and writes compete with the
+// resolve for them (docs/PERFORMANCE.md, "Fourth measurement").
+int ioDepthOf(const SequenceJob& job, bool passes);
 
 // The output's 4 color channel names for `job` (see SequenceJob::outputChannels).
 std::vector<std::string> outputChannelNames(const SequenceJob& job);

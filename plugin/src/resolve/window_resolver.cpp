@@ -33,7 +33,8 @@ enum TextureUnit : int {
 
 constexpr int kMaxSources = 32;  // window_gather.frag's MAX_SOURCES: K up to 16
 // Pass groups one gather writes besides the colour and diagnostics: 8 draw buffers, GL's
-// guaranteed minimum, less those two.
+// guaranteed minimum, less those two. (4, to save two frame-sized targets, cost more time
+// than the memory was worth: docs/PERFORMANCE.md, "Fourth measurement".)
 constexpr int kPassGroupsPerDraw = 6;
 
 // How window_classify.frag decides which samples are static.
@@ -115,11 +116,10 @@ struct WindowResolver::Impl {
   // before the next draw writes them: 6 textures where a render's every pass has 15 sums.
   std::vector<gl::Texture> passOutputs;
   std::vector<gl::Framebuffer> passTargets;  // per draw: output, debug, its groups' sums
-  std::vector<Image> lastPasses;
+  PassSums lastSums;  // read back as the groups' ring type: half groups' sums as half
   int cryptomatteSets = 0;
   std::vector<gl::TextureArray> cryptomatteRings;  // RGBA32F, at the frames' pass layers
   std::vector<gl::Framebuffer> cryptomatteTargets;  // a set's draw: output, -, its three ranks
-  std::vector<Image> lastCryptomatte;
 
   // How a frame's samples were last classified (window_classify.frag's modes).
   struct Slot {
@@ -139,7 +139,8 @@ struct WindowResolver::Impl {
 
   bool debugOutput = false;
   Image lastDebug;
-  std::vector<float> ones, zeros;  // stand-ins for a missing depth or motion AOV
+  // Stand-ins for a missing depth or motion AOV, made when first needed (24 MB at 1080p).
+  std::vector<float> ones, zeros;
 
   Impl(gl::Context& ctx, const ResolveOptions& opts)
       : context(ctx), gl(ctx.functions()), options(opts), triangle(gl) {
@@ -255,8 +256,8 @@ struct WindowResolver::Impl {
     output = gl::Texture(gl, w, h, GL_RGBA32F);
     debug = gl::Texture();
     gatherTarget = gl::Framebuffer();
-    ones.assign(std::size_t(w) * h, 1.0f);
-    zeros.assign(std::size_t(w) * h * 2, 0.0f);
+    ones.clear();
+    zeros.clear();
     slots.clear();
     allocatePasses();
   }
@@ -270,6 +271,8 @@ struct WindowResolver::Impl {
                                 color.type == SampleType::Half ? GL_RGBA16F : GL_RGBA32F);
     }
     colourStage.upload(color.data, 4, glType(color.type));
+    if (!input.depth && ones.empty()) ones.assign(std::size_t(width) * height, 1.0f);
+    if (!input.motion && zeros.empty()) zeros.assign(std::size_t(width) * height * 2, 0.0f);
     depthStage.upload(input.depth ? input.depth.data : ones.data(), 1,
                       input.depth ? glType(input.depth.type) : GL_FLOAT);
     motionStage.upload(input.motion ? input.motion.data : zeros.data(), 2,
@@ -605,16 +608,20 @@ struct WindowResolver::Impl {
       triangle.draw();
       gl::checkError(gl, "window gather pass");
     };
-    // Read back into the last frame's images where they fit: a render's every pass is 500 MB
-    // of them at 1080p, which fresh images would clear and fault in every frame.
-    const auto fit = [&](std::vector<Image>& images, int count) {
-      images.resize(std::size_t(count));
-      for (Image& image : images) {
-        if (image.width != width || image.height != height) image = Image(width, height, 4);
+    // Read back into the last frame's images where they are still here (takePassSums gives
+    // them away); fresh ones come from the frame buffer pool.
+    lastSums.groups.resize(std::size_t(groups));
+    for (int g = 0; g < groups; ++g) {
+      TypedImage& sums = lastSums.groups[std::size_t(g)];
+      const SampleType type = passHalf[std::size_t(g)] ? SampleType::Half : SampleType::Float;
+      if (sums.width() != width || sums.height() != height || sums.type() != type) {
+        sums = TypedImage(width, height, 4, type);
       }
-    };
-    fit(lastPasses, groups);
-    fit(lastCryptomatte, 3 * cryptomatteSets);
+    }
+    lastSums.cryptomatte.resize(std::size_t(3 * cryptomatteSets));
+    for (Image& ranks : lastSums.cryptomatte) {
+      if (ranks.width != width || ranks.height != height) ranks = Image(width, height, 4);
+    }
     if (groups == 0) drawGather(0, gatherTarget, [](const gl::Program&) {});
     for (int d = 0; d < groupDraws; ++d) {
       const int firstGroup = d * kPassGroupsPerDraw;
@@ -628,8 +635,8 @@ struct WindowResolver::Impl {
         p.setIntArray("uPasses", units.data(), drawGroups);
       });
       for (int g = 0; g < drawGroups; ++g) {
-        passTargets[std::size_t(d)].readRGBA(lastPasses[std::size_t(firstGroup + g)].pixels.data(),
-                                             GL_FLOAT, 2 + g);
+        TypedImage& sums = lastSums.groups[std::size_t(firstGroup + g)];
+        passTargets[std::size_t(d)].readRGBA(sums.data(), glType(sums.type()), 2 + g);
       }
     }
     for (int set = 0; set < cryptomatteSets; ++set) {
@@ -639,7 +646,7 @@ struct WindowResolver::Impl {
       });
       for (int rank = 0; rank < 3; ++rank) {
         cryptomatteTargets[std::size_t(set)].readRGBA(
-            lastCryptomatte[std::size_t(3 * set + rank)].pixels.data(), GL_FLOAT, 2 + rank);
+            lastSums.cryptomatte[std::size_t(3 * set + rank)].pixels.data(), GL_FLOAT, 2 + rank);
       }
     }
 
@@ -694,11 +701,7 @@ void WindowResolver::setPasses(const std::vector<bool>& halfGroups, int cryptoma
   impl_->allocatePasses();
 }
 
-const std::vector<Image>& WindowResolver::lastPasses() const { return impl_->lastPasses; }
-
-const std::vector<Image>& WindowResolver::lastCryptomatte() const {
-  return impl_->lastCryptomatte;
-}
+PassSums WindowResolver::takePassSums() { return std::move(impl_->lastSums); }
 
 const Image& WindowResolver::lastDebug() const { return impl_->lastDebug; }
 

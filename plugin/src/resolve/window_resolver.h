@@ -10,6 +10,7 @@
 
 #include "gl/context.h"
 #include "resolve/camera.h"
+#include "resolve/pass_plan.h"
 #include "resolve/resolver.h"
 #include "taa/options.h"
 #include "util/image.h"
@@ -53,10 +54,9 @@ class WindowResolver {
   // Cryptomatte sets weighed the same way. Call before the first frame or after clear(); every
   // addFrame then brings that many groups and sets.
   void setPasses(const std::vector<bool>& halfGroups, int cryptomatteSets);
-  // The last resolved frame's pass sums, RGBA per group.
-  const std::vector<Image>& lastPasses() const;
-  // Its Cryptomatte ranks: three RGBA images a set (id, coverage, id, coverage), heaviest first.
-  const std::vector<Image>& lastCryptomatte() const;
+  // The last resolved frame's pass sums (RGBA per group, half where the group's ring is) and
+  // Cryptomatte ranks, given away: the writer finishes the passes from them band by band.
+  PassSums takePassSums();
 
   // Keep each frame's diagnostics for lastDebug() (one more read-back per frame).
   void setDebugOutput(bool enabled);
