@@ -9,6 +9,7 @@
 #include <map>
 #include <memory>
 #include <tuple>
+#include <utility>
 
 #include "taa/error.h"
 
@@ -212,7 +213,9 @@ class PassFinisher {
       halfSums_.push_back(group.halves() ? group.halves()->pixels.data() : nullptr);
       floatSums_.push_back(group.floats() ? group.floats()->pixels.data() : nullptr);
     }
-    for (const OIIO::TypeDesc& format : plan.formats) halfChannel_.push_back(format == OIIO::TypeHalf);
+    for (const OIIO::TypeDesc& format : plan.formats) {
+      halfChannel_.push_back(format == OIIO::TypeHalf ? 1 : 0);
+    }
   }
 
   // Pixel i's channels (plan.names' order) into `target`.
@@ -291,7 +294,7 @@ class PassFinisher {
   const PassPlan& plan_;
   std::vector<const Imath::half*> halfSums_;
   std::vector<const float*> floatSums_;
-  std::vector<bool> halfChannel_;
+  std::vector<char> halfChannel_;  // per channel: 1 where the file holds it as half
 };
 
 std::pair<int, int> sizeOf(const PassSums& sums, const Image& kept) {
@@ -316,17 +319,19 @@ Image finishPasses(const PassSums& sums, const Image& kept, const PassPlan& plan
 io::ExtraChannels::Packed finishPassesPacked(PassSums sums, Image kept, PassPlan plan) {
   io::ExtraChannels::Packed out;
   std::tie(out.width, out.height) = sizeOf(sums, kept);
-  // What the writer's band calls finish from, kept alive by them (a std::function is copied).
+  // What the writer's band calls finish from, and the finisher set up once for all of them;
+  // kept alive by the calls (a std::function is copied).
   struct Inputs {
+    Inputs(PassSums s, Image k, PassPlan p)
+        : sums(std::move(s)), kept(std::move(k)), plan(std::move(p)), finisher(sums, kept, plan) {}
     PassSums sums;
     Image kept;
     PassPlan plan;
+    PassFinisher finisher;  // after what it refers to
   };
-  auto inputs = std::make_shared<const Inputs>(Inputs{std::move(sums), std::move(kept), std::move(plan)});
+  auto inputs = std::make_shared<const Inputs>(std::move(sums), std::move(kept), std::move(plan));
   out.rows = [inputs](std::size_t first, std::size_t count, unsigned char* to,
-                      std::size_t stride) {
-    PassFinisher(inputs->sums, inputs->kept, inputs->plan).packed(first, count, to, stride);
-  };
+                      std::size_t stride) { inputs->finisher.packed(first, count, to, stride); };
   return out;
 }
 
