@@ -95,5 +95,40 @@ TEST(PassPlan, ProductsAreSummedAndDividedAndNormalsRenormalised) {
   EXPECT_EQ(out.pixels[5], 3.0f);
 }
 
+
+// A render's half and float passes interleave in file order (Cycles: AO, DiffCol, ... half,
+// Normal, Position float, Shadow, Trans* half, UV float). The half values are grouped ahead of
+// the float ones, so only the groups that need float are float; each channel still finds its
+// own value.
+TEST(PassPlan, HalfValuesFillWholeGroupsAheadOfFloatOnes) {
+  const std::vector<std::string> names = {"L.AO.R",       "L.AO.G",       "L.AO.B",
+                                          "L.Normal.X",   "L.Normal.Y",   "L.Normal.Z",
+                                          "L.Shadow.R",   "L.Shadow.G",   "L.Shadow.B",
+                                          "L.Position.X", "L.Position.Y", "L.Emit.R",
+                                          "L.Emit.G"};
+  const auto H = OIIO::TypeHalf, F = OIIO::TypeFloat;
+  const std::vector<OIIO::TypeDesc> formats = {H, H, H, F, F, F, H, H, H, F, F, H, H};
+  const PassPlan plan = planPasses(names, formats, {});
+  // 8 half values, 5 float: 2 half groups and 2 float ones (in file order: 4 groups, 1 half).
+  ASSERT_EQ(plan.groups(), 4);
+  EXPECT_EQ(plan.halfGroups, (std::vector<bool>{true, true, false, false}));
+  for (std::size_t c = 0; c < names.size(); ++c) {
+    ASSERT_GE(plan.value[c], 0) << names[c];
+    EXPECT_EQ(plan.valueChannel[std::size_t(plan.value[c])], int(c)) << names[c];
+    EXPECT_EQ(plan.value[c] < 8, formats[c] == H) << names[c];
+  }
+  // The values come back to their channels: each channel's value is its own index.
+  Image frame(1, 1, int(names.size()));
+  for (std::size_t c = 0; c < names.size(); ++c) frame.pixels[c] = 0.25f * float(c + 1);
+  const PackedPasses packed = packPasses(frame, plan);
+  PassSums sums;
+  for (const TypedImage& group : packed.groups) sums.groups.push_back(group.toFloat());
+  const Image out = finishPasses(sums, packed.kept, plan);
+  for (std::size_t c = 0; c < names.size(); ++c) {
+    if (c >= 3 && c <= 5) continue;  // the normal is renormalised
+    EXPECT_EQ(out.pixels[c], frame.pixels[c]) << names[c];
+  }
+}
+
 }  // namespace
 }  // namespace taa

@@ -78,16 +78,29 @@ PassPlan planPasses(const std::vector<std::string>& names,
   plan.factor.assign(names.size(), -1);
   for (int c = 0; c < int(names.size()); ++c) {
     const ChannelKind kind = plan.kinds[std::size_t(c)];
-    if (!summed(kind)) continue;
-    if (kind == ChannelKind::Light) {
-      const auto found = index.find(io::factorChannelOf(names[std::size_t(c)]));
-      if (found != index.end() && plan.kinds[std::size_t(found->second)] == ChannelKind::Factor) {
-        plan.factor[std::size_t(c)] = found->second;
-      }
+    if (kind != ChannelKind::Light) continue;
+    const auto found = index.find(io::factorChannelOf(names[std::size_t(c)]));
+    if (found != index.end() && plan.kinds[std::size_t(found->second)] == ChannelKind::Factor) {
+      plan.factor[std::size_t(c)] = found->second;
     }
-    plan.value[std::size_t(c)] = int(plan.valueChannel.size());
-    plan.valueChannel.push_back(c);
-    plan.valueFactor.push_back(plan.factor[std::size_t(c)]);
+  }
+  // A product of two halves rounded to half again loses 2^-11 of itself, far below what the
+  // comp sees, and halves the ring's memory; so a value may be held as half where its channel
+  // and its factor are. The all-half values go first, so that they fill whole groups: in file
+  // order a render's half and float passes interleave and one float value makes a group of
+  // four float (a 1080p Cycles frame with every pass: 144 -> 120 bytes a pixel in the ring).
+  const auto halfValue = [&](int c) {
+    const int factor = plan.factor[std::size_t(c)];
+    return formats[std::size_t(c)] == OIIO::TypeHalf &&
+           (factor < 0 || formats[std::size_t(factor)] == OIIO::TypeHalf);
+  };
+  for (const bool half : {true, false}) {
+    for (int c = 0; c < int(names.size()); ++c) {
+      if (!summed(plan.kinds[std::size_t(c)]) || halfValue(c) != half) continue;
+      plan.value[std::size_t(c)] = int(plan.valueChannel.size());
+      plan.valueChannel.push_back(c);
+      plan.valueFactor.push_back(plan.factor[std::size_t(c)]);
+    }
   }
   findCryptomatteSets(plan, index);
   std::vector<bool> inSet(names.size(), false);
@@ -103,11 +116,7 @@ PassPlan planPasses(const std::vector<std::string>& names,
   for (int g = 0; g < plan.groups(); ++g) {
     bool half = true;
     for (std::size_t v = std::size_t(4 * g); v < std::min(plan.valueChannel.size(), std::size_t(4 * g + 4)); ++v) {
-      // A product of two halves rounded to half again loses 2^-11 of itself, far below what
-      // the comp sees, and halves the ring's memory.
-      const int factor = plan.valueFactor[v];
-      half = half && formats[std::size_t(plan.valueChannel[v])] == OIIO::TypeHalf &&
-             (factor < 0 || formats[std::size_t(factor)] == OIIO::TypeHalf);
+      half = half && halfValue(plan.valueChannel[v]);
     }
     plan.halfGroups.push_back(half);
   }
