@@ -114,7 +114,8 @@ Image OfxHostTest::expectedWith(int frame, const std::string& folder,
 }
 
 std::unique_ptr<HostEffect> OfxHostTest::instanceWithoutPreferences(bool half,
-                                                                   double lastFrame) {
+                                                                   double lastFrame,
+                                                                   const ClipInputs& extra) {
   EXPECT_EQ(host_.load(bundleBinary()), "");
   EXPECT_EQ(host_.action(kOfxActionLoad, nullptr), kOfxStatOK);
   EXPECT_EQ(host_.action(kOfxActionDescribe, &descriptor_), kOfxStatOK);
@@ -123,10 +124,10 @@ std::unique_ptr<HostEffect> OfxHostTest::instanceWithoutPreferences(bool half,
   contextDescriptor_.props = descriptor_.props;
   EXPECT_EQ(host_.action(kOfxImageEffectActionDescribeInContext, &contextDescriptor_, &context),
             kOfxStatOK);
-  const std::map<std::string, const ClipFrames*> inputs = {
-      {"Source", half ? &halves_[0] : &color_},
-      {"Depth", half ? &halves_[1] : &depth_},
-      {"Motion", half ? &halves_[2] : &motion_}};
+  ClipInputs inputs = {{"Source", half ? &halves_[0] : &color_},
+                       {"Depth", half ? &halves_[1] : &depth_},
+                       {"Motion", half ? &halves_[2] : &motion_}};
+  inputs.insert(extra.begin(), extra.end());
   auto effect = host_.makeInstance(contextDescriptor_, kOfxImageEffectContextGeneral, inputs,
                                    kBounds, kFirst, lastFrame);
   EXPECT_EQ(host_.action(kOfxActionCreateInstance, effect.get()), kOfxStatOK);
@@ -135,8 +136,9 @@ std::unique_ptr<HostEffect> OfxHostTest::instanceWithoutPreferences(bool half,
   return effect;
 }
 
-std::unique_ptr<HostEffect> OfxHostTest::instance(bool half, double lastFrame) {
-  auto effect = instanceWithoutPreferences(half, lastFrame);
+std::unique_ptr<HostEffect> OfxHostTest::instance(bool half, double lastFrame,
+                                                  const ClipInputs& extra) {
+  auto effect = instanceWithoutPreferences(half, lastFrame, extra);
   PropertySet preferences;
   EXPECT_EQ(host_.clipPreferences(*effect, preferences), kOfxStatOK);
   return effect;

@@ -49,10 +49,14 @@ class OfxHostTest : public ::testing::Test {
   // history mode (the tests here were written for its temporal plan; OfxHostWindowTest sets
   // window mode, ParametersHaveTheLibrarysDefaults checks the default) and runs the clip
   // preferences action as a host does before rendering.
-  std::unique_ptr<HostEffect> instance(bool half = false, double lastFrame = kLast);
+  // `extra` connects more clips (Pass, PassFactor) by name.
+  using ClipInputs = std::map<std::string, const ClipFrames*>;
+  std::unique_ptr<HostEffect> instance(bool half = false, double lastFrame = kLast,
+                                       const ClipInputs& extra = {});
   // The same, without the clip preferences action (the caller runs it).
   std::unique_ptr<HostEffect> instanceWithoutPreferences(bool half = false,
-                                                        double lastFrame = kLast);
+                                                        double lastFrame = kLast,
+                                                        const ClipInputs& extra = {});
   void destroy(std::unique_ptr<HostEffect>& effect);
 
   Image render(HostEffect& effect, int frame, OfxStatus expectedStatus = kOfxStatOK,

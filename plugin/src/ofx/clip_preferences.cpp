@@ -40,6 +40,8 @@ OfxStatus clipPreferences(OfxImageEffectHandle effect, OfxPropertySetHandle outA
   setComponents(outArgs, kOfxImageEffectOutputClipName, kOfxImageComponentRGBA);
   keepConnectedComponents(effect, outArgs, kDepthClip, true);
   keepConnectedComponents(effect, outArgs, kMotionClip, false);
+  keepConnectedComponents(effect, outArgs, kPassClip, true);
+  keepConnectedComponents(effect, outArgs, kPassFactorClip, true);
   return kOfxStatOK;
 }
 

@@ -42,7 +42,9 @@ OfxStatus describe(OfxImageEffectHandle descriptor) {
       "Temporal anti-aliasing resolve of a jittered render with its depth and motion AOVs, "
       "exactly as taatool resolves the sequence. History mode: frame t is resolved from the "
       "clip's first frame (see History Frames). Window mode: from frames t-K..t+K, in any "
-      "order.");
+      "order. With the Pass clip connected (window mode), the output is that pass (a light, "
+      "colour, data or Cryptomatte pass of the same render) resolved with the Source's "
+      "weights, as taatool resolves every pass beside the beauty.");
   setStrings(props, kOfxImageEffectPropSupportedContexts,
              {kOfxImageEffectContextFilter, kOfxImageEffectContextGeneral});
   setStrings(props, kOfxImageEffectPropSupportedPixelDepths, {kOfxBitDepthHalf, kOfxBitDepthFloat});
@@ -76,6 +78,16 @@ OfxStatus describeInContext(OfxImageEffectHandle descriptor) {
   if (status == kOfxStatOK) {
     status = defineClip(descriptor, kMotionClip,
                         {kOfxImageComponentRGBA, kOfxImageComponentRGB}, true);
+  }
+  if (status == kOfxStatOK) {
+    status = defineClip(descriptor, kPassClip,
+                        {kOfxImageComponentRGBA, kOfxImageComponentRGB, kOfxImageComponentAlpha},
+                        true);
+  }
+  if (status == kOfxStatOK) {
+    status = defineClip(descriptor, kPassFactorClip,
+                        {kOfxImageComponentRGBA, kOfxImageComponentRGB, kOfxImageComponentAlpha},
+                        true);
   }
   if (status == kOfxStatOK) {
     status = defineClip(descriptor, kOfxImageEffectOutputClipName, {kOfxImageComponentRGBA},

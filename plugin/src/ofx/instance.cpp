@@ -13,6 +13,7 @@
 #include "ofx/clip_image.h"
 #include "ofx/describe.h"
 #include "ofx/host_suites.h"
+#include "ofx/pass_clip.h"
 #include "util/frame_span.h"
 
 namespace taa::ofx {
@@ -45,6 +46,23 @@ void requireSamePixelAspect(const ClipImage& aux, const ClipImage& color) {
   }
 }
 
+// The resolved Pass clip into `out` (RGBA): its channels in order; a one-channel (Alpha) pass
+// in all four; an RGB pass with A = 1, as hosts map RGB to RGBA.
+void readPass(const NodeSlot& history, taa_buffer& out) {
+  const std::vector<std::string>& names = history.passNames;
+  std::vector<taa_pass> passes;
+  for (int c = 0; c < int(names.size()); ++c) passes.push_back({names[std::size_t(c)].c_str(), &out, c});
+  if (taa_node_read_passes(history.node, passes.data(), int(passes.size())) != TAA_OK) {
+    throw std::runtime_error(taa_node_last_error(history.node));
+  }
+  float* values = static_cast<float*>(out.data);
+  for (std::size_t p = 0; p < std::size_t(out.width) * out.height; ++p) {
+    float* pixel = values + 4 * p;
+    if (names.size() == 1) pixel[1] = pixel[2] = pixel[3] = pixel[0];
+    if (names.size() == 3) pixel[3] = 1.0f;
+  }
+}
+
 }  // namespace
 
 Instance::Instance(OfxImageEffectHandle effect)
@@ -53,6 +71,17 @@ Instance::Instance(OfxImageEffectHandle effect)
   depth_ = clipHandle(effect, kDepthClip);
   motion_ = clipHandle(effect, kMotionClip);
   output_ = clipHandle(effect, kOfxImageEffectOutputClipName);
+  pass_ = clipHandle(effect, kPassClip);
+  passFactor_ = clipHandle(effect, kPassFactorClip);
+}
+
+PluginSettings Instance::settingsAt(OfxTime time) const {
+  PluginSettings settings = readSettings(effect_, time);
+  settings.passConnected = isConnected(pass_);
+  // Only a light pass has a factor: a colour left connected under another kind is not used.
+  settings.passFactorConnected =
+      settings.passConnected && settings.passKind == kPassLight && isConnected(passFactor_);
+  return settings;
 }
 
 Instance::~Instance() = default;
@@ -64,7 +93,7 @@ FrameRange Instance::sourceRange(int frame) const {
 
 TemporalPlan Instance::plan(OfxTime time) const {
   const int frame = nearestFrame(time);
-  return planFrame(frame, readSettings(effect_, time), sourceRange(frame));
+  return planFrame(frame, settingsAt(time), sourceRange(frame));
 }
 
 void Instance::purgeCaches() { pool_.purge(); }
@@ -102,9 +131,25 @@ OfxRectI Instance::pushFrame(NodeSlot& history, int frame, const PluginSettings&
   input.motion = motionBuffer ? &motionBuffer->buffer() : nullptr;
   input.has_jitter = 1;
   frameJitter(settings, frame, scale, input.jitter);
-  if (taa_node_push_frame(history.node, &input) != TAA_OK) {
+  if (!settings.passConnected) {
+    if (taa_node_push_frame(history.node, &input) != TAA_OK) {
+      throw std::runtime_error(taa_node_last_error(history.node));
+    }
+    return bounds;
+  }
+  const ClipImage pass(pass_, frame, kPassClip);
+  requireSamePixelAspect(pass, color);
+  std::optional<ClipImage> factor;
+  if (settings.passFactorConnected) {
+    factor.emplace(passFactor_, frame, kPassFactorClip);
+    requireSamePixelAspect(*factor, color);
+  }
+  const PassBuffers passes(settings.passKind, pass, factor ? &*factor : nullptr, bounds);
+  if (taa_node_push_frame_passes(history.node, &input, passes.passes().data(),
+                                 int(passes.passes().size())) != TAA_OK) {
     throw std::runtime_error(taa_node_last_error(history.node));
   }
+  history.passNames = passChannels(settings.passKind, pass.components(), false).pass;
   return bounds;
 }
 
@@ -114,7 +159,12 @@ void Instance::render(OfxTime time, const OfxRectI& window, RenderScale scale) {
                              ") must be positive");
   }
   const int requested = nearestFrame(time);
-  const PluginSettings settings = readSettings(effect_, time);
+  const PluginSettings settings = settingsAt(time);
+  if (settings.passConnected && settings.mode != kModeWindow) {
+    throw std::runtime_error(
+        "the Pass clip is resolved with the window's weights: set Mode to Window, or "
+        "disconnect the Pass clip");
+  }
   const FrameRange range = sourceRange(requested);
   const TemporalPlan plan = planFrame(requested, settings, range);
   // The idle node that holds most of this render's work: in window mode the most frames of
@@ -192,6 +242,13 @@ void Instance::renderWindow(NodeSlot& history, const TemporalPlan& plan, FrameRa
       throw std::runtime_error(taa_last_error());
     }
     applySettings(history.node, settings, scale);
+    if (settings.passConnected) {
+      // The kinds of the Pass clip's channels, by the names pass_clip gives them.
+      const std::string rules = passChannels(settings.passKind, 4, false).rules;
+      if (taa_node_set_string(history.node, "aov", rules.c_str()) != TAA_OK) {
+        throw std::runtime_error(taa_node_last_error(history.node));
+      }
+    }
     history.settings = settings;
     history.scale = scale;
     history.range = range;
@@ -232,9 +289,11 @@ void Instance::writeOutput(const NodeSlot& history, OfxTime time,
   out.channels = 4;
   out.type = TAA_PIXEL_FLOAT;
   out.y_up = 1;
-  if (taa_node_read_output(history.node, &out) != TAA_OK) {
+  const bool pass = history.settings && history.settings->passConnected;
+  if (!pass && taa_node_read_output(history.node, &out) != TAA_OK) {
     throw std::runtime_error(taa_node_last_error(history.node));
   }
+  if (pass) readPass(history, out);
 
   const ClipImage target(output_, time, kOfxImageEffectOutputClipName);
   const OfxRectI& dst = target.bounds();

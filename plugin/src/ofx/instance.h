@@ -8,7 +8,8 @@
 // node is reset and the plan's frames are pushed again. Window: the node's ring keeps the
 // frames it holds between renders; a render drops those its window does not need and pushes
 // those it lacks, so t right after t - 1 pushes one frame, and any order is exact. The
-// frames-needed action asks the host for the plan's frames.
+// frames-needed action asks the host for the plan's frames. With the Pass clip connected (window
+// mode) the output is that pass resolved with the Source's weights (ofx/pass_clip.h).
 #pragma once
 
 #include <cstddef>
@@ -49,13 +50,17 @@ class Instance {
                      RenderScale scale) const;
   void renderWindow(NodeSlot& history, const TemporalPlan& plan, FrameRange range,
                     const PluginSettings& settings, RenderScale scale) const;
-  // Fetches the frame's images, pushes them into the node and returns the Source's bounds.
+  // The parameters at `time` and the Pass clips' connections.
+  PluginSettings settingsAt(OfxTime time) const;
+  // Fetches the frame's images (the Pass clips' too when connected), pushes them into the node
+  // and returns the Source's bounds.
   OfxRectI pushFrame(NodeSlot& history, int frame, const PluginSettings& settings,
                      RenderScale scale) const;
   void writeOutput(const NodeSlot& history, OfxTime time, const OfxRectI& window) const;
 
   OfxImageEffectHandle effect_;
   OfxImageClipHandle source_ = nullptr, depth_ = nullptr, motion_ = nullptr, output_ = nullptr;
+  OfxImageClipHandle pass_ = nullptr, passFactor_ = nullptr;
   NodePool pool_;
 };
 

@@ -14,6 +14,7 @@
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "ofx/plugin_parameters.h"
@@ -32,6 +33,7 @@ struct NodeSlot {
   std::optional<PluginSettings> settings;
   RenderScale scale;
   OfxRectI bounds{};             // of the resolved frame
+  std::vector<std::string> passNames;  // window mode: the Pass clip's channels in the node
 
   NodeSlot() = default;
   ~NodeSlot();

@@ -98,7 +98,8 @@ OfxStatus framesNeeded(OfxImageEffectHandle effect, OfxPropertySetHandle inArgs,
   suites().properties->propGetDouble(inArgs, kOfxPropTime, 0, &time);
   const FrameRange frames = instance->plan(time).frames;
   const double values[2] = {double(frames.first), double(frames.last)};
-  for (const char* clip : {kOfxImageEffectSimpleSourceClipName, kDepthClip, kMotionClip}) {
+  for (const char* clip : {kOfxImageEffectSimpleSourceClipName, kDepthClip, kMotionClip,
+                           kPassClip, kPassFactorClip}) {
     const std::string name = std::string(kOfxImageClipPropFrameRangePrefix) + clip;
     suites().properties->propSetDoubleN(outArgs, name.c_str(), 2, values);
   }

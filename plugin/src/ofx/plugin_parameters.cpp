@@ -42,6 +42,7 @@ constexpr const char* kOcioConfigFile = "ocioConfigFile";
 constexpr const char* kColorspaceIn = "colorspaceIn";
 constexpr const char* kBracket = "bracket";
 constexpr const char* kColorspaceOut = "colorspaceOut";
+constexpr const char* kPassKind = "passKind";
 
 void check(OfxStatus status, const std::string& what) {
   if (status != kOfxStatOK) {
@@ -156,7 +157,8 @@ bool PluginSettings::operator==(const PluginSettings& o) const {
                     s.windowReconstructionWeight, s.blend, s.rectify, s.dilateMotion, s.jitter,
                     s.jitterOffset, s.jitterPeriod, s.motionY, s.motionTo, s.motionScale,
                     s.depthNoHit, s.historyFrames, s.ocioConfigSource, s.ocioConfigFile,
-                    s.colorspaceIn, s.bracket, s.colorspaceOut);
+                    s.colorspaceIn, s.bracket, s.colorspaceOut, s.passKind, s.passConnected,
+                    s.passFactorConnected);
   };
   return tie(*this) == tie(o);
 }
@@ -247,6 +249,14 @@ void defineParameters(OfxParamSetHandle set) {
   defineString(set, kColorspaceOut, "Output Colorspace",
                "Colorspace or role of the output (empty: the input's; taatool --colorspace-out).",
                color.colorspaceOut);
+  defineChoice(set, kPassKind, "Pass Kind",
+               "What the Pass clip holds (window mode; taatool --aov's kinds). Light: summed "
+               "with the Source's weights, with Pass Factor (its colour pass) as Cycles' DiffDir "
+               "with DiffCol, so that light x colour adds up. Factor: a colour pass, summed. "
+               "Average: UV, position. Normal: averaged, XYZ renormalised. Nearest: depth, IDs, "
+               "vectors: the frame's own value, never a blend. Cryptomatte: one rank layer "
+               "(float), its IDs re-weighed.",
+               {"Light", "Factor", "Average", "Normal", "Nearest", "Cryptomatte"});
 }
 
 bool isColorParameter(const std::string& name) {
@@ -314,6 +324,7 @@ PluginSettings readSettings(OfxImageEffectHandle effect, OfxTime time) {
   s.colorspaceIn = getString(set, kColorspaceIn, time);
   s.bracket = getString(set, kBracket, time);
   s.colorspaceOut = getString(set, kColorspaceOut, time);
+  s.passKind = getInt(set, kPassKind, time);
   return s;
 }
 

@@ -45,6 +45,11 @@ struct PluginSettings {
   std::string colorspaceIn = taa::ColorOptions{}.colorspaceIn;
   std::string bracket = taa::ColorOptions{}.bracket;
   std::string colorspaceOut = taa::ColorOptions{}.colorspaceOut;
+  // The Pass clip (ofx/pass_clip.h): its kind, and whether it and Pass Factor are connected
+  // (from the clips, not parameters: a node's ring holds one set of passes).
+  int passKind = 0;
+  bool passConnected = false;
+  bool passFactorConnected = false;
 
   bool operator==(const PluginSettings& other) const;
   bool operator!=(const PluginSettings& other) const { return !(*this == other); }
@@ -70,7 +75,7 @@ taa::ColorOptions colorOptions(const PluginSettings& settings);
 // same Jitter, Offset and Period) times the render scale, per axis.
 void frameJitter(const PluginSettings& settings, int frame, RenderScale scale, float jitter[2]);
 
-// Reads the instance's parameter values at `time`. Throws std::runtime_error on host errors.
+// Reads the instance's parameter values at `time` (the clips' connections are the caller's). Throws std::runtime_error on host errors.
 PluginSettings readSettings(OfxImageEffectHandle effect, OfxTime time);
 
 // Sets `settings` on `node`; pixel-unit motion is multiplied by the render scale in x (the
