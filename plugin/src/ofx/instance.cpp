@@ -51,7 +51,9 @@ void requireSamePixelAspect(const ClipImage& aux, const ClipImage& color) {
 void readPass(const NodeSlot& history, taa_buffer& out) {
   const std::vector<std::string>& names = history.passNames;
   std::vector<taa_pass> passes;
-  for (int c = 0; c < int(names.size()); ++c) passes.push_back({names[std::size_t(c)].c_str(), &out, c});
+  for (int c = 0; c < int(names.size()); ++c) {
+    passes.push_back({names[std::size_t(c)].c_str(), &out, c});
+  }
   if (taa_node_read_passes(history.node, passes.data(), int(passes.size())) != TAA_OK) {
     throw std::runtime_error(taa_node_last_error(history.node));
   }
@@ -244,7 +246,7 @@ void Instance::renderWindow(NodeSlot& history, const TemporalPlan& plan, FrameRa
     applySettings(history.node, settings, scale);
     if (settings.passConnected) {
       // The kinds of the Pass clip's channels, by the names pass_clip gives them.
-      const std::string rules = passChannels(settings.passKind, 4, false).rules;
+      const std::string rules = passRules(settings.passKind);
       if (taa_node_set_string(history.node, "aov", rules.c_str()) != TAA_OK) {
         throw std::runtime_error(taa_node_last_error(history.node));
       }

@@ -29,32 +29,30 @@ PassChannels passChannels(int kind, int components, bool withFactor) {
       // "DiffDir" and "DiffCol": the names by which the node pairs a light with its factor.
       channels.pass = named("Pass.DiffDir", components, false);
       if (withFactor) channels.factor = named("Pass.DiffCol", components, false);
-      channels.rules = "Pass.DiffDir.*=light;Pass.DiffCol.*=factor";
       break;
-    case kPassFactor:
-      channels.pass = named("Pass.Colour", components, false);
-      channels.rules = "Pass.*=factor";
-      break;
+    case kPassFactor: channels.pass = named("Pass.Colour", components, false); break;
     case kPassAverage:
-      channels.pass = named("Pass.Data", components, false);
-      channels.rules = "Pass.*=average";
-      break;
-    case kPassNormal:
-      channels.pass = named("Pass.Normal", components, components >= 3);
-      channels.rules = "Pass.Normal.*=normal;Pass.*=average";
-      break;
-    case kPassNearest:
-      channels.pass = named("Pass.Data", components, false);
-      channels.rules = "Pass.*=nearest";
-      break;
+    case kPassNearest: channels.pass = named("Pass.Data", components, false); break;
+    case kPassNormal: channels.pass = named("Pass.Normal", components, components >= 3); break;
     case kPassCryptomatte:
       channels.pass = {"Pass.Crypto00.r", "Pass.Crypto00.g", "Pass.Crypto00.b", "Pass.Crypto00.a"};
       channels.pass.resize(std::size_t(components));
-      channels.rules = "Pass.*=cryptomatte";
       break;
     default: throw std::runtime_error("Pass Kind choice out of range");
   }
   return channels;
+}
+
+std::string passRules(int kind) {
+  switch (kind) {
+    case kPassLight: return "Pass.DiffDir.*=light;Pass.DiffCol.*=factor";
+    case kPassFactor: return "Pass.*=factor";
+    case kPassAverage: return "Pass.*=average";
+    case kPassNormal: return "Pass.Normal.*=normal;Pass.*=average";
+    case kPassNearest: return "Pass.*=nearest";
+    case kPassCryptomatte: return "Pass.*=cryptomatte";
+    default: throw std::runtime_error("Pass Kind choice out of range");
+  }
 }
 
 PassBuffers::PassBuffers(int kind, const ClipImage& image, const ClipImage* factor,

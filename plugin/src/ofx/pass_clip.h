@@ -30,13 +30,14 @@ enum PassKind {
   kPassCryptomatte = 5,  // one rank layer (two ID / coverage pairs): IDs re-weighed, float only
 };
 
-// The node's channel names for a pass of `components` channels (1, 3 or 4) and for its factor,
-// and the "aov" rules that give them `kind`.
+// The node's channel names for a pass of `components` channels (1, 3 or 4) and for its factor.
 struct PassChannels {
   std::vector<std::string> pass, factor;  // factor: empty unless a light with a factor
-  std::string rules;
 };
 PassChannels passChannels(int kind, int components, bool withFactor);
+
+// The node's "aov" rules that give those channels `kind`.
+std::string passRules(int kind);
 
 // The node's passes for one frame: each channel of `image` (the pass, over `bounds`, the
 // Source's) and of `factor` when given. Throws std::runtime_error naming the clip and frame
