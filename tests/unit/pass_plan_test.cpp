@@ -64,6 +64,10 @@ TEST(PassPlan, ProductsAreSummedAndDividedAndNormalsRenormalised) {
       planPasses(names, std::vector<OIIO::TypeDesc>(names.size(), OIIO::TypeFloat), {});
   EXPECT_FALSE(floatPlan.halfGroups[0]);
   EXPECT_EQ(plan.keptCount, 1);
+  EXPECT_TRUE(plan.halfOrFloat && floatPlan.halfOrFloat);  // packed in their types when finished
+  std::vector<OIIO::TypeDesc> withUint = formats;
+  withUint.back() = OIIO::TypeUInt;  // an ID as uint: the finished passes go the float way
+  EXPECT_FALSE(planPasses(names, withUint, {}).halfOrFloat);
 
   // Two samples, equal weights: light 0.2 x colour 0.5 and 0.6 x colour 1.0.
   Image a(1, 1, 6), b(1, 1, 6);

@@ -71,6 +71,9 @@ PassPlan planPasses(const std::vector<std::string>& names,
   PassPlan plan;
   plan.names = names;
   plan.formats = formats;
+  for (const OIIO::TypeDesc& format : formats) {
+    plan.halfOrFloat = plan.halfOrFloat && (format == OIIO::TypeHalf || format == OIIO::TypeFloat);
+  }
   std::map<std::string, int> index;
   for (int c = 0; c < int(names.size()); ++c) index[names[std::size_t(c)]] = c;
   for (const std::string& name : names) plan.kinds.push_back(io::channelKind(name, rules));

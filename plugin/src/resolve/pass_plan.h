@@ -48,6 +48,10 @@ struct PassPlan {
   };
   std::vector<CryptomatteSet> cryptomatte;
 
+  // Whether every channel is half or float: the finished passes can then be packed in their
+  // file types band by band (finishPassesPacked); a uint channel goes the float way.
+  bool halfOrFloat = true;
+
   int groups() const { return int((valueChannel.size() + 3) / 4); }
   bool empty() const { return names.empty(); }
 };

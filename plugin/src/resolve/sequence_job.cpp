@@ -583,9 +583,11 @@ void runWindow(JobRun& run, gl::Context& context) {
   }
   WindowResolver& resolver = *resolvers.front();
   std::vector<FrameReport> reports(outputs.size());
-  // Whether the frames carry passes is known once the first is read: until then, one read.
-  ReadAhead reads(plan.reads, 0, [&run](int frame) { return run.read(frame); });
-  WriteBehind writes(0, [&](int index) {
+  // Whether the frames carry passes is known once the first is read: until then, one read,
+  // unless --threads said how many.
+  const int firstDepth = job.ioThreads == kAutoIoThreads ? 0 : job.ioThreads;
+  ReadAhead reads(plan.reads, firstDepth, [&run](int frame) { return run.read(frame); });
+  WriteBehind writes(firstDepth, [&](int index) {
     if (run.callbacks.frameDone) run.callbacks.frameDone(reports[std::size_t(index)]);
   });
   std::map<int, io::FrameData> waiting;  // read output frames, pixels dropped once uploaded
@@ -683,13 +685,8 @@ void runWindow(JobRun& run, gl::Context& context) {
     io::ExtraChannels passes = std::move(data.passes);
     if (passPlan && !passPlan->empty()) {
       // The passes in the file's order and types, after the colour: finished from the sums
-      // band by band as the writer packs them when all are half or float (a uint channel goes
-      // the float way, as before).
-      const bool halfOrFloat =
-          std::all_of(passPlan->formats.begin(), passPlan->formats.end(), [](OIIO::TypeDesc t) {
-            return t == OIIO::TypeHalf || t == OIIO::TypeFloat;
-          });
-      if (halfOrFloat) {
+      // band by band as the writer packs them.
+      if (passPlan->halfOrFloat) {
         passes.packed = finishPassesPacked(resolver.takePassSums(), std::move(passes.image), *passPlan);
         passes.image = Image();
       } else {
