@@ -6,7 +6,9 @@
 // A sample is static when its motion vector agrees with the camera's motion of a static point
 // at its depth, at the sample's own (jittered) position: vectors are the sample's. A frame
 // whose previous frame is not in the window (the window's first) is checked forward instead:
-// the camera carries the sample into the next frame, whose vector there must lead back to it.
+// the camera carries the sample into the next frame, whose vector there must lead back to it
+// (or, where the next frame sees another surface, its own vector must match the camera's
+// motion extrapolated backward).
 // The frame's samples are read from its layer (the depth's sign, from an earlier
 // classification, ignored) and written to another, their motion copied to that layer of the
 // motion ring.
@@ -45,10 +47,17 @@ bool isStatic(ivec2 pixel, float depth, vec2 vector) {
     return true;  // it leaves the frame: nothing to check against; static is the common case
   }
   uvec4 nextTexel = texelFetch(uRing, ivec3(next, uOtherLayer), 0);
-  // Only the same surface can say: where the next frame sees something else there (a wire
-  // passing in front by parallax), its vector is that thing's; static is the common case.
+  // Only the same surface can say. Where the next frame sees something else there (a wire
+  // passing in front by parallax, or the background a moving object uncovers as it leaves),
+  // the sample's own vector, to the previous frame, must agree with the camera's motion run
+  // backward, as fast as it goes forward within half of it: a static point's does, while the
+  // trailing edge of a moving object (which the next frame no longer sees) does not, and taken
+  // for static it would be carried to t where the object has long left: a ghost of its edge.
   float expected = (uCameraToOtherCamera * point).z;
-  if (abs(abs(ringDepth(nextTexel)) - expected) > 0.05 * expected) return true;
+  if (abs(abs(ringDepth(nextTexel)) - expected) > 0.05 * expected) {
+    vec2 backward = 2.0 * position - other;
+    return distance(position + vector, backward) <= uTolerance + 0.5 * distance(other, position);
+  }
   vec2 nextVector = unpackRingMotion(texelFetch(uRingMotion, ivec3(next, uOtherLayer), 0).r);
   return distance(other + nextVector, position) <= uTolerance;
 }
