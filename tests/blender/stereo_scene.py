@@ -1,6 +1,6 @@
 # A tiny Cycles stereo render (Blender's multi-view EXR: one part, a multiView attribute,
-# channels like ViewLayer.Combined.left.R) of the factory scene's cube sliding, for the
-# multi-view tests. Usage: blender -b --factory-startup -noaudio -P stereo_scene.py -- OUT
+# channels like ViewLayer.Combined.left.R; depth, vectors, DiffDir, DiffCol and IndexOB) of the
+# factory scene's cube sliding, for the multi-view tests. Usage: blender -b --factory-startup -noaudio -P stereo_scene.py -- OUT
 import sys
 
 import bpy
@@ -24,6 +24,10 @@ scene.render.image_settings.color_depth = "16"
 layer = scene.view_layers[0]
 layer.use_pass_z = True
 layer.use_pass_vector = True
+# Passes resolved beside each view's colour (issue 21): a light with its factor, an ID.
+layer.use_pass_diffuse_direct = True
+layer.use_pass_diffuse_color = True
+layer.use_pass_object_index = True
 cube = bpy.data.objects["Cube"]
 cube.location = (0, 0, 0)
 cube.keyframe_insert("location", frame=1)

@@ -1,7 +1,7 @@
 // A Blender stereo render (issue 24): Cycles writes one multi-view EXR a frame (multiView
 // left, right; ViewLayer.Combined.left.R ...). taatool --preset cycles resolves both views in
 // one run and writes them back as one multi-view file, each view bit for bit what resolving it
-// alone (--view NAME) gives, in both modes.
+// alone (--view NAME) gives, in both modes; in window mode each view's passes too (issue 21).
 #include <gtest/gtest.h>
 
 #include <OpenImageIO/imageio.h>
@@ -112,8 +112,10 @@ TEST_P(StereoTest, BothViewsInOneRunEachAsIfAlone) {
       EXPECT_EQ(multiView(alone.spec), std::vector<std::string>{view});
       EXPECT_NE(alone.spec.get_string_attribute("taa:options").find("; views=" + view),
                 std::string::npos);
-      for (const char* c : {"R", "G", "B", "A"}) {
-        const std::string name = "ViewLayer.Combined." + view + "." + c;
+      // Its colour, and in window mode its passes: its own channels only, each as in both.
+      EXPECT_EQ(alone.spec.nchannels, mode == "window" ? 16 : 4);
+      for (const std::string& name : alone.spec.channelnames) {
+        EXPECT_NE(name.find("." + view + "."), std::string::npos) << name;
         EXPECT_EQ(both.channel(name), alone.channel(name)) << name << " frame " << frame;
       }
       EXPECT_EQ(both.spec.channelformat(0), OIIO::TypeHalf);  // the render's half colour
@@ -142,6 +144,71 @@ TEST(StereoViews, ViewChoicesAreChecked) {
                          "render_0001.exr"});
   test::expectToolError(with({"--debug-layers"}),
                         {"--debug-layers shows one view", "pick one with --view"});
+}
+
+// Each view's passes (issue 21) are its own channels, resolved with its own weights: the
+// multi-view run's channels of a view are what a file of that view alone (the view taken out
+// of the names, no multiView) resolves to, bit for bit, kinds included (DiffDir.left.R is a
+// DiffDir, summed with its DiffCol).
+TEST(StereoPasses, EachViewResolvesItsOwnPassesAsAFileOfItAlone) {
+  const fs::path& render = renderedStereo();
+  const fs::path dir = test::freshTestFolder();
+  auto run = [&](const fs::path& input, const std::string& out) {
+    const test::ToolRun r = test::runTaatool(
+        {"--preset", "cycles", input.string(), "-q", "-o", (dir / out / "r_####.exr").string()},
+        dir);
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+  };
+  run(render / "render_####.exr", "both");
+  for (const std::string view : {"left", "right"}) {
+    const std::string tag = "." + view + ".";
+    for (int frame = 1; frame <= kFrames; ++frame) {
+      const Exr input = readExr(render / ("render_" + frameName(frame).substr(2)));
+      OIIO::ImageSpec spec = input.spec;
+      spec.erase_attribute("multiView");
+      spec.channelnames.clear();
+      spec.channelformats.clear();
+      std::vector<int> picked;
+      for (int c = 0; c < input.spec.nchannels; ++c) {
+        std::string name = input.spec.channelnames[std::size_t(c)];
+        const std::size_t at = name.find(tag);
+        if (at == std::string::npos) continue;
+        picked.push_back(c);
+        spec.channelnames.push_back(name.erase(at, view.size() + 1));
+        spec.channelformats.push_back(input.spec.channelformat(c));
+      }
+      spec.nchannels = int(picked.size());
+      std::vector<float> pixels;
+      for (std::size_t p = 0; p < input.spec.image_pixels(); ++p) {
+        for (int c : picked) {
+          pixels.push_back(input.pixels[p * std::size_t(input.spec.nchannels) + std::size_t(c)]);
+        }
+      }
+      const fs::path path = dir / ("in_" + view) / frameName(frame);
+      fs::create_directories(path.parent_path());
+      auto out = OIIO::ImageOutput::create(path.string());
+      ASSERT_TRUE(out && out->open(path.string(), spec));
+      ASSERT_TRUE(out->write_image(OIIO::TypeFloat, pixels.data()));
+      ASSERT_TRUE(out->close());
+    }
+    run(dir / ("in_" + view) / "r_####.exr", "alone_" + view);
+    for (int frame = 1; frame <= kFrames; ++frame) {
+      const Exr both = readExr(dir / "both" / frameName(frame));
+      const Exr alone = readExr(dir / ("alone_" + view) / frameName(frame));
+      // Colour and 12 pass channels a view (depth, vectors, DiffDir, DiffCol, IndexOB).
+      EXPECT_EQ(alone.spec.nchannels, 16);
+      EXPECT_EQ(both.spec.nchannels, 32);
+      for (const std::string& name : alone.spec.channelnames) {
+        const std::string named = name.substr(0, name.rfind('.')) + tag.substr(0, tag.size() - 1) +
+                                  name.substr(name.rfind('.'));
+        EXPECT_EQ(both.channel(named), alone.channel(name)) << named << " frame " << frame;
+      }
+    }
+  }
+  // The passes are resolved, not copied: the comparison can fail.
+  const Exr raw = readExr(render / "render_0003.exr");
+  const Exr both = readExr(dir / "both" / frameName(3));
+  EXPECT_NE(both.channel("ViewLayer.DiffCol.right.R"), raw.channel("ViewLayer.DiffCol.right.R"));
 }
 
 }  // namespace

@@ -15,6 +15,23 @@ TEST(Views, ChannelNamesCarryTheViewBeforeTheirLastComponent) {
   EXPECT_EQ(viewChannelName("depth.Z", "left"), "depth.left.Z");
 }
 
+// A one-part file's channels belong to the view named before their last component, else to
+// the default view; a pass's kind is read from its name without the view.
+TEST(Views, ChannelsBelongToTheViewInTheirNameElseTheDefaultOne) {
+  const std::vector<std::string> views = {"left", "right"};
+  EXPECT_EQ(viewOfChannel("ViewLayer.DiffDir.right.R", views), "right");
+  EXPECT_EQ(viewOfChannel("ViewLayer.DiffDir.left.R", views), "left");
+  EXPECT_EQ(viewOfChannel("right.Z", views), "right");
+  EXPECT_EQ(viewOfChannel("Z", views), "left");
+  EXPECT_EQ(viewOfChannel("ViewLayer.Normal.X", views), "left");
+  EXPECT_EQ(viewOfChannel("right.layer.R", views), "left");  // a layer named like a view
+  EXPECT_EQ(withoutView("ViewLayer.DiffDir.left.R", "left"), "ViewLayer.DiffDir.R");
+  EXPECT_EQ(withoutView("right.Z", "right"), "Z");
+  EXPECT_EQ(withoutView("ViewLayer.DiffDir.R", "left"), "ViewLayer.DiffDir.R");
+  EXPECT_EQ(withoutView("Aleft.R", "left"), "Aleft.R");  // a component, not a suffix
+  EXPECT_EQ(withoutView("ViewLayer.DiffDir.left.R", ""), "ViewLayer.DiffDir.left.R");
+}
+
 TEST(Views, OnePartWithMultiView) {
   const std::string path = test::scratchFolder() + "/stereo.exr";
   // Nuke's way: the default view (left) without a view in its names, the other with.

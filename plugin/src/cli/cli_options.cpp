@@ -373,11 +373,6 @@ void resolveFrameList(CommandLine& cl) {
     cl.job.availableFrames = availableInputFrames(cl.job.layout);
   }
   selectViews(cl);
-  // A multi-view file's passes stay out for now: its other views' channels share the part.
-  if (cl.job.views.size() > 1) {
-    cl.job.layout.passes = false;
-    for (auto& view : cl.job.views) view.layout.passes = false;
-  }
 }
 
 // `words` wrapped to lines of at most `width` columns, each after `indent` spaces.

@@ -89,6 +89,11 @@ struct AovLayout {
   // resolved by its kind; `passRules` come first, pass-through patterns count as "copy".
   bool passes = false;
   std::vector<ChannelKindRule> passRules;
+  // A view of a one-part multi-view file (io/views.h): its passes are the channels of this
+  // view alone, and their kinds come from their names without the view ("DiffDir.left.R" is
+  // a DiffDir). Empty: the file has no views, or one part per view.
+  std::string view;
+  std::vector<std::string> fileViews;  // the file's views, the default one first
 };
 
 // The Blender Cycles multi-layer layout for render layer `layer` ("ViewLayer"): all AOVs in the

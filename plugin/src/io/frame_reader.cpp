@@ -23,6 +23,7 @@
 #include "io/layout_hint.h"
 #include "io/part_channels.h"
 #include "io/sequence_pattern.h"
+#include "io/views.h"
 #include "taa/error.h"
 
 namespace taa::io {
@@ -426,16 +427,18 @@ void addPassthroughRead(PartReads& reads, OpenExr& file, int part,
             extra.image.channels);
 }
 
-// Every channel of the color part but the color's own and those dropped: the passes resolved
-// beside the beauty (AovLayout::passes), read whole or handed to `passBands` band by band.
+// Every channel of the color part but the color's own and those dropped (of a one-part
+// multi-view file: of the layout's view): the passes resolved beside the beauty
+// (AovLayout::passes), read whole or handed to `passBands` band by band.
 void addPassesRead(PartReads& reads, OpenExr& file, int part, const AovLayout& layout, int frame,
                    ExtraChannels& passes, const PassBandReceiver& passBands) {
   const std::vector<ChannelKindRule> rules = passRulesOf(layout);
   const OIIO::ImageSpec& spec = file.parts[std::size_t(part)];
   const auto& color = layout.color.channels;
   passes = pickedChannels(spec, [&](const std::string& name) {
-    return std::find(color.begin(), color.end(), name) == color.end() &&
-           channelKind(name, rules) != ChannelKind::Drop;
+    const bool ofView = layout.view.empty() || viewOfChannel(name, layout.fileViews) == layout.view;
+    return ofView && std::find(color.begin(), color.end(), name) == color.end() &&
+           channelKind(withoutView(name, layout.view), rules) != ChannelKind::Drop;
   });
   if (passes.names.empty()) return;
   if (passBands) {

@@ -50,6 +50,35 @@ std::string viewChannelName(const std::string& channel, const std::string& view)
                                   : channel.substr(0, dot + 1) + view + channel.substr(dot);
 }
 
+std::string viewOfChannel(const std::string& channel, const std::vector<std::string>& views) {
+  const std::size_t last = channel.rfind('.');
+  if (last != std::string::npos && last > 0) {
+    const std::size_t before = channel.rfind('.', last - 1);
+    const std::size_t start = before == std::string::npos ? 0 : before + 1;
+    const std::string component = channel.substr(start, last - start);
+    if (std::find(views.begin(), views.end(), component) != views.end()) return component;
+  }
+  return views.empty() ? "" : views.front();
+}
+
+std::string withoutView(const std::string& channel, const std::string& view) {
+  const std::size_t last = channel.rfind('.');
+  if (view.empty() || last == std::string::npos || last < view.size()) return channel;
+  const std::size_t start = last - view.size();
+  if (channel.compare(start, view.size(), view) != 0 || (start > 0 && channel[start - 1] != '.')) {
+    return channel;
+  }
+  // "left.R" -> "R"; "Combined.left.R" -> "Combined.R".
+  return start == 0 ? channel.substr(last + 1) : channel.substr(0, start - 1) + channel.substr(last);
+}
+
+std::vector<std::string> passPlanNames(const std::vector<std::string>& channels,
+                                       const AovLayout& layout) {
+  std::vector<std::string> names;
+  for (const std::string& channel : channels) names.push_back(withoutView(channel, layout.view));
+  return names;
+}
+
 AovLayout layoutForView(const AovLayout& base, const FileViews& views, std::size_t index) {
   AovLayout layout = base;
   const std::string& view = views.names.at(index);
@@ -72,7 +101,12 @@ AovLayout layoutForView(const AovLayout& base, const FileViews& views, std::size
   if (layout.depth) forView(*layout.depth, layout.depth->pattern.empty());
   if (layout.motion) forView(*layout.motion, layout.motion->pattern.empty());
   if (index > 0) layout.passthrough.clear();
-  if (index > 0) layout.passes = false;  // the first view's passes only
+  if (views.parts.empty()) {
+    layout.view = view;
+    layout.fileViews = views.names;
+  } else if (index > 0) {
+    layout.passes = false;  // one part per view: the first view's passes only
+  }
   return layout;
 }
 

@@ -28,10 +28,23 @@ FileViews readViews(const std::string& path);
 // "Combined.left.R", "R" -> "left.R").
 std::string viewChannelName(const std::string& channel, const std::string& view);
 
+// The view a channel of a one-part multi-view file belongs to: the component before its last
+// when that is one of `views`, else the default view (the first: OpenEXR's convention).
+std::string viewOfChannel(const std::string& channel, const std::vector<std::string>& views);
+
+// `channel` without `view` before its last component ("Combined.left.R" -> "Combined.R"); as
+// it is when it has no such component or `view` is empty.
+std::string withoutView(const std::string& channel, const std::string& view);
+
+// Names whose kinds a pass plan reads: `channels` of the layout's view without the view.
+std::vector<std::string> passPlanNames(const std::vector<std::string>& channels,
+                                       const AovLayout& layout);
+
 // The layout that reads view `index` of `views` with `base`'s AOVs and conventions: channel
 // names with the view in them (single part; the default view keeps a name without it where the
 // file has no name with it), or the view's part (one part per view). Pass-through channels go
-// with the first view only.
+// with the first view only; passes with each view of a one-part file (its own channels), with
+// the first view of a file of one part per view.
 AovLayout layoutForView(const AovLayout& base, const FileViews& views, std::size_t index);
 
 }  // namespace taa::io

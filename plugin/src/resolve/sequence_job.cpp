@@ -15,6 +15,7 @@
 #include "io/sequence_pattern.h"
 #include "io/sequence_scan.h"
 #include "io/stale_temp_files.h"
+#include "io/views.h"
 #include "resolve/jitter.h"
 #include "resolve/option_registry.h"
 #include "resolve/pass_plan.h"
@@ -344,7 +345,8 @@ struct JobRun {
     io::PassBandReceiver passBands;
     if (job.resolve.mode == ResolveMode::Window) {
       passBands = [&](const io::ExtraChannels& passes, int width, int height) {
-        plan = planPasses(passes.names, passes.formats, io::passRulesOf(layout));
+        plan = planPasses(io::passPlanNames(passes.names, layout), passes.formats,
+                          io::passRulesOf(layout));
         packed = newPackedPasses(plan, width, height);
         return [&](std::size_t firstPixel, std::size_t count, const float* values) {
           packPassRows(values, firstPixel, count, plan, packed);
@@ -431,7 +433,7 @@ struct JobRun {
   std::function<void()> writeOf(const io::FrameData& data, TypedImage output,
                                 io::ExtraChannels debug,
                                 const std::vector<TypedImage>& otherViews = {},
-                                io::ExtraChannels passes = {}) const {
+                                std::vector<io::ExtraChannels> passes = {}) const {
     OIIO::ImageSpec spec = data.colorSpec;
     spec.attribute("taa:version", TAA_VERSION_STRING);
     spec.attribute("taa:options", options);
@@ -452,7 +454,7 @@ struct JobRun {
       colorNames.insert(colorNames.end(), viewNames[v].begin(), viewNames[v].end());
     }
     io::appendExtraChannels(extra, passthroughWithout(data.passthrough, colorNames));
-    io::appendExtraChannels(extra, std::move(passes));
+    for (io::ExtraChannels& viewPasses : passes) io::appendExtraChannels(extra, std::move(viewPasses));
     if (!debug.names.empty()) io::appendExtraChannels(extra, debug);
     return [path = io::expandFramePattern(job.outputPattern, data.frame),
             output = std::move(output), spec = std::move(spec), this, extra = std::move(extra),
@@ -592,10 +594,17 @@ void runWindow(JobRun& run, gl::Context& context) {
   });
   std::map<int, io::FrameData> waiting;  // read output frames, pixels dropped once uploaded
   bool toldVectorsOnly = false;
-  // The passes (issue 21): planned from the first frame read, every frame the same channels.
-  std::optional<PassPlan> passPlan;
-  std::string passFile;  // the file the plan came from, for the message when one differs
+  // The passes (issue 21): planned from the first frame read, every frame the same channels;
+  // each view its own (a multi-view file's views each resolve their passes with their own
+  // weights).
+  std::vector<std::optional<PassPlan>> passPlans(resolvers.size());
+  std::string passFile;  // the file the plans came from, for the message when one differs
   std::vector<int> inRing;
+  bool depthSet = false;  // the reads' and writes' depth, once the first frame's passes are known
+  const auto hasPasses = [&passPlans] {
+    return std::any_of(passPlans.begin(), passPlans.end(),
+                       [](const std::optional<PassPlan>& p) { return p && !p->empty(); });
+  };
 
   for (int index = 0; index < int(outputs.size()); ++index) {
     run.stopIfAsked(writes, index);
@@ -618,35 +627,41 @@ void runWindow(JobRun& run, gl::Context& context) {
                           "their motion vectors only");
         toldVectorsOnly = true;
       }
-      if (!passPlan) {
-        passPlan = planPasses(data.passes.names, data.passes.formats,
-                              io::passRulesOf(*run.layouts.front()));
-        passFile = data.colorPath;
-        resolver.setPasses(passPlan->halfGroups, int(passPlan->cryptomatte.size()));
-        reads.setDepth(ioDepthOf(job, !passPlan->empty()));
-        writes.setDepth(ioDepthOf(job, !passPlan->empty()));
-        if (run.callbacks.detail && !passPlan->empty()) {
-          // One line a kind, the channels in file order: a render's every pass is 70 names.
-          std::map<std::string, std::string> byKind;
-          for (std::size_t c = 0; c < passPlan->names.size(); ++c) {
-            std::string& names = byKind[io::kindName(passPlan->kinds[c])];
-            names += (names.empty() ? "" : ", ") + passPlan->names[c];
+      for (std::size_t v = 0; v < resolvers.size(); ++v) {
+        const io::ExtraChannels& passes = JobRun::view(data, v).passes;
+        const std::vector<std::string> names = io::passPlanNames(passes.names, *run.layouts[v]);
+        std::optional<PassPlan>& passPlan = passPlans[v];
+        if (!passPlan) {
+          passPlan = planPasses(names, passes.formats, io::passRulesOf(*run.layouts[v]));
+          passFile = data.colorPath;
+          resolvers[v]->setPasses(passPlan->halfGroups, int(passPlan->cryptomatte.size()));
+          if (run.callbacks.detail && !passPlan->empty()) {
+            // One line a kind, the channels in file order: a render's every pass is 70 names.
+            std::map<std::string, std::string> byKind;
+            for (std::size_t c = 0; c < passPlan->names.size(); ++c) {
+              std::string& list = byKind[io::kindName(passPlan->kinds[c])];
+              list += (list.empty() ? "" : ", ") + passes.names[c];
+            }
+            for (const auto& [kind, list] : byKind) {
+              run.callbacks.detail("passes resolved beside the colour, " + kind + ": " + list);
+            }
           }
-          for (const auto& [kind, names] : byKind) {
-            run.callbacks.detail("passes resolved beside the colour, " + kind + ": " + names);
-          }
+        } else if (names != passPlan->names) {
+          throw Error("the frame's pass channels differ from those of " + passFile +
+                          " (every frame of a run must hold the same channels)",
+                      {data.colorPath, f, ""});
         }
-      } else if (data.passes.names != passPlan->names) {
-        throw Error("the frame's pass channels differ from those of " + passFile +
-                        " (every frame of a run must hold the same channels)",
-                    {data.colorPath, f, ""});
+      }
+      if (!depthSet) {
+        reads.setDepth(ioDepthOf(job, hasPasses()));
+        writes.setDepth(ioDepthOf(job, hasPasses()));
+        depthSet = true;
       }
       for (std::size_t v = 0; v < resolvers.size(); ++v) {
-        ResolveInput input = run.inputOf(JobRun::view(data, v), v == 0);
-        if (v == 0) {
-          for (const TypedImage& group : data.passGroups) input.passGroups.emplace_back(&group);
-          for (const Image& set : data.passCryptomatte) input.cryptomatte.emplace_back(&set);
-        }
+        const io::FrameData& viewData = JobRun::view(data, v);
+        ResolveInput input = run.inputOf(viewData, v == 0);
+        for (const TypedImage& group : viewData.passGroups) input.passGroups.emplace_back(&group);
+        for (const Image& set : viewData.passCryptomatte) input.cryptomatte.emplace_back(&set);
         try {
           resolvers[v]->addFrame(f, input);
         } catch (const Error& e) {
@@ -662,6 +677,8 @@ void runWindow(JobRun& run, gl::Context& context) {
         data.depth = Image();
         data.motion = Image();
         for (io::FrameData& other : data.otherViews) {
+          other.passGroups.clear();
+          other.passCryptomatte.clear();
           other.color = TypedImage();
           other.depth = Image();
           other.motion = Image();
@@ -682,15 +699,21 @@ void runWindow(JobRun& run, gl::Context& context) {
     }
     TypedImage output = std::move(views.front());
     views.erase(views.begin());
-    io::ExtraChannels passes = std::move(data.passes);
-    if (passPlan && !passPlan->empty()) {
-      // The passes in the file's order and types, after the colour: finished from the sums
-      // band by band as the writer packs them.
+    // Each view's passes in the file's order and types, after the colours: finished from the
+    // sums band by band as the writer packs them.
+    std::vector<io::ExtraChannels> passes;
+    for (std::size_t v = 0; v < resolvers.size(); ++v) {
+      io::FrameData& viewData = v == 0 ? data : data.otherViews[v - 1];
+      passes.push_back(std::move(viewData.passes));
+      const std::optional<PassPlan>& passPlan = passPlans[v];
+      if (!passPlan || passPlan->empty()) continue;
+      io::ExtraChannels& viewPasses = passes.back();
       if (passPlan->halfOrFloat) {
-        passes.packed = finishPassesPacked(resolver.takePassSums(), std::move(passes.image), *passPlan);
-        passes.image = Image();
+        viewPasses.packed = finishPassesPacked(resolvers[v]->takePassSums(),
+                                               std::move(viewPasses.image), *passPlan);
+        viewPasses.image = Image();
       } else {
-        passes.image = finishPasses(resolver.takePassSums(), passes.image, *passPlan);
+        viewPasses.image = finishPasses(resolvers[v]->takePassSums(), viewPasses.image, *passPlan);
       }
     }
     io::ExtraChannels debug;
