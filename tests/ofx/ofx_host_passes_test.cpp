@@ -52,8 +52,8 @@ class OfxHostPassesTest : public OfxHostTest {
     }
     const fs::path in = dir_ / "passes";
     const std::string command =
-        "env -u OCIO '" + std::string(TAA_TAATOOL_PATH) + "' '" + (in / "beauty.####.exr").string() +
-        "' --depth '" + (dir_ / "depth.####.exr").string() + "' --motion '" +
+        "env -u OCIO '" + std::string(TAA_TAATOOL_PATH) + "' '" +
+        (in / "beauty.####.exr").string() + "' --depth '" + (dir_ / "depth.####.exr").string() + "' --motion '" +
         (dir_ / "motion.####.exr").string() + "' -d float --mode window --window 2 -o '" +
         (in / "out" / "out.####.exr").string() + "' -q";
     ASSERT_EQ(std::system(command.c_str()), 0) << command;

@@ -69,7 +69,8 @@ std::string withoutView(const std::string& channel, const std::string& view) {
     return channel;
   }
   // "left.R" -> "R"; "Combined.left.R" -> "Combined.R".
-  return start == 0 ? channel.substr(last + 1) : channel.substr(0, start - 1) + channel.substr(last);
+  return start == 0 ? channel.substr(last + 1)
+                    : channel.substr(0, start - 1) + channel.substr(last);
 }
 
 std::vector<std::string> passPlanNames(const std::vector<std::string>& channels,

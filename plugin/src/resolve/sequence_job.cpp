@@ -454,7 +454,9 @@ struct JobRun {
       colorNames.insert(colorNames.end(), viewNames[v].begin(), viewNames[v].end());
     }
     io::appendExtraChannels(extra, passthroughWithout(data.passthrough, colorNames));
-    for (io::ExtraChannels& viewPasses : passes) io::appendExtraChannels(extra, std::move(viewPasses));
+    for (io::ExtraChannels& viewPasses : passes) {
+      io::appendExtraChannels(extra, std::move(viewPasses));
+    }
     if (!debug.names.empty()) io::appendExtraChannels(extra, debug);
     return [path = io::expandFramePattern(job.outputPattern, data.frame),
             output = std::move(output), spec = std::move(spec), this, extra = std::move(extra),
@@ -571,6 +573,20 @@ io::ExtraChannels windowDebugChannels(const Image& debug, const Image& nonFinite
 
 // The window resolve: frames enter a ring as they are read (once each, in order) and leave it
 // when no later window needs them; each output frame is resolved from its window alone.
+// One line a kind for -v, the channels (as the file names them) in file order: a render's
+// every pass is 70 names.
+void describePassKinds(const PassPlan& plan, const std::vector<std::string>& names,
+                       const gl::LogSink& detail) {
+  std::map<std::string, std::string> byKind;
+  for (std::size_t c = 0; c < plan.names.size(); ++c) {
+    std::string& list = byKind[io::kindName(plan.kinds[c])];
+    list += (list.empty() ? "" : ", ") + names[c];
+  }
+  for (const auto& [kind, list] : byKind) {
+    detail("passes resolved beside the colour, " + kind + ": " + list);
+  }
+}
+
 void runWindow(JobRun& run, gl::Context& context) {
   const SequenceJob& job = run.job;
   std::vector<int> outputs = job.frames;
@@ -635,16 +651,8 @@ void runWindow(JobRun& run, gl::Context& context) {
           passPlan = planPasses(names, passes.formats, io::passRulesOf(*run.layouts[v]));
           passFile = data.colorPath;
           resolvers[v]->setPasses(passPlan->halfGroups, int(passPlan->cryptomatte.size()));
-          if (run.callbacks.detail && !passPlan->empty()) {
-            // One line a kind, the channels in file order: a render's every pass is 70 names.
-            std::map<std::string, std::string> byKind;
-            for (std::size_t c = 0; c < passPlan->names.size(); ++c) {
-              std::string& list = byKind[io::kindName(passPlan->kinds[c])];
-              list += (list.empty() ? "" : ", ") + passes.names[c];
-            }
-            for (const auto& [kind, list] : byKind) {
-              run.callbacks.detail("passes resolved beside the colour, " + kind + ": " + list);
-            }
+          if (run.callbacks.detail) {
+            describePassKinds(*passPlan, passes.names, run.callbacks.detail);
           }
         } else if (names != passPlan->names) {
           throw Error("the frame's pass channels differ from those of " + passFile +
