@@ -68,32 +68,24 @@ OfxStatus describe(OfxImageEffectHandle descriptor) {
 }
 
 OfxStatus describeInContext(OfxImageEffectHandle descriptor) {
-  OfxStatus status = defineClip(descriptor, kOfxImageEffectSimpleSourceClipName,
-                                {kOfxImageComponentRGBA, kOfxImageComponentRGB}, false);
-  if (status == kOfxStatOK) {
-    status = defineClip(descriptor, kDepthClip,
-                        {kOfxImageComponentAlpha, kOfxImageComponentRGBA, kOfxImageComponentRGB},
-                        true);
+  struct ClipSpec {
+    const char* name;
+    std::vector<const char*> components;
+    bool optional;
+  };
+  const std::vector<const char*> rgb = {kOfxImageComponentRGBA, kOfxImageComponentRGB};
+  const std::vector<const char*> rgbOrAlpha = {kOfxImageComponentRGBA, kOfxImageComponentRGB,
+                                               kOfxImageComponentAlpha};
+  const ClipSpec clips[] = {{kOfxImageEffectSimpleSourceClipName, rgb, false},
+                            {kDepthClip, rgbOrAlpha, true},
+                            {kMotionClip, rgb, true},
+                            {kPassClip, rgbOrAlpha, true},
+                            {kPassFactorClip, rgbOrAlpha, true},
+                            {kOfxImageEffectOutputClipName, {kOfxImageComponentRGBA}, false}};
+  for (const ClipSpec& clip : clips) {
+    const OfxStatus status = defineClip(descriptor, clip.name, clip.components, clip.optional);
+    if (status != kOfxStatOK) return status;
   }
-  if (status == kOfxStatOK) {
-    status = defineClip(descriptor, kMotionClip,
-                        {kOfxImageComponentRGBA, kOfxImageComponentRGB}, true);
-  }
-  if (status == kOfxStatOK) {
-    status = defineClip(descriptor, kPassClip,
-                        {kOfxImageComponentRGBA, kOfxImageComponentRGB, kOfxImageComponentAlpha},
-                        true);
-  }
-  if (status == kOfxStatOK) {
-    status = defineClip(descriptor, kPassFactorClip,
-                        {kOfxImageComponentRGBA, kOfxImageComponentRGB, kOfxImageComponentAlpha},
-                        true);
-  }
-  if (status == kOfxStatOK) {
-    status = defineClip(descriptor, kOfxImageEffectOutputClipName, {kOfxImageComponentRGBA},
-                        false);
-  }
-  if (status != kOfxStatOK) return status;
   OfxParamSetHandle parameters = nullptr;
   if (suites().effects->getParamSet(descriptor, &parameters) != kOfxStatOK) {
     return kOfxStatErrBadHandle;
