@@ -65,6 +65,18 @@ def matte(image, id_float):
     return coverage
 
 
+def placement(coverage, reference):
+    """A matte's centroid offset from the reference's (px, x and y) and its area over the
+    reference's: a matte that lags a moving object or trails a ghost shows in both."""
+    ys, xs = np.mgrid[0:coverage.shape[0], 0:coverage.shape[1]]
+    area, truth_area = coverage.sum(), reference.sum()
+    if area <= 0 or truth_area <= 0:
+        return float('nan'), float('nan'), float('nan')
+    return (float((coverage * xs).sum() / area - (reference * xs).sum() / truth_area),
+            float((coverage * ys).sum() / area - (reference * ys).sum() / truth_area),
+            float(area / truth_area))
+
+
 def main():
     shot, resolved, first, last = sys.argv[1], sys.argv[2], int(sys.argv[3]), int(sys.argv[4])
     scores = {}
@@ -86,9 +98,11 @@ def main():
         for name, hex_id in manifest.items():
             id_float = np.frombuffer(bytes.fromhex(hex_id)[::-1], dtype=np.float32)[0]
             reference = matte(truth, id_float)
+            resolved_matte = matte(out, id_float)
             mattes.setdefault(name, []).append(
                 (float(np.mean(np.abs(matte(raw, id_float) - reference))),
-                 float(np.mean(np.abs(matte(out, id_float) - reference)))))
+                 float(np.mean(np.abs(resolved_matte - reference)))) +
+                placement(resolved_matte, reference))
     print('frames %d-%d\n' % (first, last))
     print('| pass | raw PSNR (dB) | resolved PSNR (dB) | gain |')
     print('|---|---|---|---|')
@@ -104,11 +118,16 @@ def main():
     for name, values in identities.items():
         print('| %s | %.3f %% | %.5f |' % (name, np.mean([v[0] for v in values]),
                                          np.mean([v[1] for v in values])))
-    print('\n| Cryptomatte object | raw matte error | resolved matte error |')
-    print('|---|---|---|')
+    print('\n| Cryptomatte object | raw matte error | resolved matte error | resolved centroid - '
+          'truth\'s, x y (px, worst frame) | resolved area / truth\'s (range) |')
+    print('|---|---|---|---|---|')
     for name, values in mattes.items():
-        print('| %s | %.4f | %.4f |' % (name, np.mean([v[0] for v in values]),
-                                        np.mean([v[1] for v in values])))
+        dx = max((v[2] for v in values), key=abs)
+        dy = max((v[3] for v in values), key=abs)
+        areas = [v[4] for v in values]
+        print('| %s | %.4f | %.4f | %+.2f %+.2f | %.3f-%.3f |' % (
+            name, np.mean([v[0] for v in values]), np.mean([v[1] for v in values]), dx, dy,
+            min(areas), max(areas)))
 
 
 main()
