@@ -38,6 +38,9 @@
 #ifndef CRYPTOMATTE
 #define CRYPTOMATTE 0  // 1: a Cryptomatte set's IDs, weighed as the beauty's samples (issue 21)
 #endif
+#ifndef TILE_STATS
+#define TILE_STATS 0  // 1: the tile test's input, per sampled pixel and source (uStatsStride)
+#endif
 #ifndef CHAINS
 #define CHAINS 1  // 0: no frame of the window has moving samples; the chains' code is left out
 #endif            // (llvmpipe would run it, masked, for every pixel)
@@ -80,9 +83,38 @@ uniform bool uOpaqueMoving;
 // what the pixel gathered from the nearer frames: shading that changed there has changed for
 // good, farther frames would only be rejected one by one or let through by chance.
 uniform bool uAdaptive;
-
+// The tile test (--window-near, resolve/window_tiles): how far each side of the window reaches,
+// in frames, per tile of uTileSize pixels (R behind, G ahead), filtered between tile centres so
+// that the window changes smoothly across tiles; a frame at a fraction of the reach counts
+// with that fraction.
+uniform bool uTiles;
+uniform int uTileSize;
+uniform sampler2D uTileReach;
+// Moving samples come from the sources within uMovingRadius (--window-moving; 0: all), and so
+// does every sample of a pixel whose own 3x3 at t has a moving one: a moving object's chains
+// are short, and static samples from farther frames would outweigh its own at its edges.
+uniform int uMovingRadius;
+#if TILE_STATS
+// The tile test's input, at every uStatsStride-th pixel each way: per source 8 bits, 0 where it
+// gave no samples, else the luma of its samples' mean minus t's own (decisionLuma) as
+// 64 + 256 x difference (clamped to 1..127) and, in the high bit, whether the colour test
+// found them disagreeing; three to a float, 12 sources to a texel.
+uniform int uStatsStride;
+layout(location = 0) out vec4 outStats[3];
+// The 12 words as three vectors, filled by selects: an array indexed by the loop's counter
+// would live in memory, lane by lane, on llvmpipe.
+uvec4 gStatsWords[3];
+void addStatsCode(int k, uint code) {
+  ivec4 word = ivec4(k / 3) - ivec4(0, 1, 2, 3);
+  uint bits = code << uint(8 * (k % 3));
+  gStatsWords[0] |= uvec4(equal(word, ivec4(0))) * bits;
+  gStatsWords[1] |= uvec4(equal(word, ivec4(4))) * bits;
+  gStatsWords[2] |= uvec4(equal(word, ivec4(8))) * bits;
+}
+#else
 layout(location = 0) out vec4 outColor;  // output colour space
 layout(location = 1) out vec4 outDebug;  // weight gathered, rejected fraction, candidates, 0
+#endif
 
 // The render's other passes (light x factor, factors, averaged data: resolve/pass_plan), four
 // values a texel, one ring of them per group at each frame's pass layer (which, unlike the
@@ -295,9 +327,15 @@ void addMovingBlock(vec2 chained, bool alive) {
 }
 
 void main() {
+#if TILE_STATS
+  ivec2 pixel = ivec2(gl_FragCoord.xy) * uStatsStride + uStatsStride / 2;
+  gPosition = vec2(pixel) + 0.5;
+  gStatsWords[0] = gStatsWords[1] = gStatsWords[2] = uvec4(0u);
+#else
   ivec2 pixel = ivec2(gl_FragCoord.xy);
-  gPixel = pixel;
   gPosition = gl_FragCoord.xy;
+#endif
+  gPixel = pixel;
   gSize = textureSize(uRing, 0).xy;
   gSum = vec4(0.0);
   gWeight = 0.0;
@@ -427,6 +465,11 @@ void main() {
   float withinWeight = ownWeight;
 
   bool behindOpen = true, aheadOpen = true;  // uAdaptive: each side until a source disagrees
+  vec2 reach = vec2(1e9);
+  if (uTiles) {
+    vec2 tiles = vec2(textureSize(uTileReach, 0));
+    reach = texture(uTileReach, gPosition / (float(uTileSize) * tiles)).rg;
+  }
   for (int k = 0; k < uSourceCount; ++k) {
     if (!(behindOpen || aheadOpen)) break;
     gSourceLayer = uSourceLayer[k];
@@ -440,8 +483,14 @@ void main() {
     int offsetFrames = uSourceOffset[k];
     int layer = gSourceLayer;
     vec2 jitter = gSourceJitter;
+    // A side ends beyond its reach (the loop ends with both).
+    float framesAway = float(abs(offsetFrames));
+    float inReach = clamp((offsetFrames < 0 ? reach.x : reach.y) - framesAway + 1.0, 0.0, 1.0);
+    inReach = anyMoving && uMovingRadius > 0 && framesAway > float(uMovingRadius) ? 0.0 : inReach;
+    behindOpen = behindOpen && !(offsetFrames < 0 && inReach <= 0.0);
+    aheadOpen = aheadOpen && !(offsetFrames > 0 && inReach <= 0.0);
     bool open = offsetFrames < 0 ? behindOpen : aheadOpen;
-    float frameWeight = open ? uSourceWeight[k] : 0.0;
+    float frameWeight = open ? uSourceWeight[k] * inReach : 0.0;
     gSourceWeight = 0.0;
     gSourceSum = vec4(0.0);
     gSourceLumaSum = 0.0;
@@ -497,7 +546,8 @@ void main() {
     // is not there (hidden, or gone).
     bool continues = alive && onScreen(at) &&
                      ringDepth(texelFetch(uRing, ivec3(atClamped, layer), 0)) < 0.0;
-    addMovingBlock(chained, continues);
+    bool movingInReach = uMovingRadius == 0 || framesAway <= float(uMovingRadius);
+    addMovingBlock(chained, continues && movingInReach);
     vec2 atMotion = motionAt(atClamped, layer);
     behind = behindStep && continues ? chained + atMotion : behind;
     velocity = !behindStep && continues ? chained - aheadPrevious : velocity;
@@ -513,6 +563,11 @@ void main() {
                                         gSourceWeight, ownWeight, ownLuma, uColourTolerance);
       // Adaptive: a side whose source disagrees is closed for the farther frames.
       bool closes = uAdaptive && agreement < 0.5;
+#if TILE_STATS
+      uint code = uint(64.0 + clamp(round(256.0 * (mean - ownLuma)), -63.0, 63.0)) |
+                  (agreement < 0.5 ? 128u : 0u);
+      addStatsCode(k, code);
+#endif
       behindOpen = behindOpen && !(closes && offsetFrames < 0);
       aheadOpen = aheadOpen && !(closes && offsetFrames > 0);
       gSum += agreement * frameWeight * gSourceSum;
@@ -529,6 +584,11 @@ void main() {
     }
   }
 
+#if TILE_STATS
+  outStats[0] = vec4(gStatsWords[0]);
+  outStats[1] = vec4(gStatsWords[1]);
+  outStats[2] = vec4(gStatsWords[2]);
+#else
   vec4 working = withinWorkingRange(gSum / gWeight, rgbMin, rgbMax);
 #if LINEAR_SUM
   // Input values summed: into the output colorspace through the bracket and back (the
@@ -547,4 +607,5 @@ void main() {
   float rejected = gHidden + gDisagreeing;
   outDebug = vec4(gWeight, gCandidates > 0.0 ? min(rejected / gCandidates, 1.0) : 0.0,
                   gCandidates, 0.0);
+#endif
 }

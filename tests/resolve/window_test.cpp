@@ -290,10 +290,56 @@ TEST_F(WindowTest, AMovingShadowIsNotSmeared) {
   const Image out = resolve(scene, frame, options);
   for (int x : {24, 26, 28}) EXPECT_GT(out.at(x, 8)[0], 0.9f) << "x " << x;
   for (int x : {15, 17, 19}) EXPECT_LT(out.at(x, 8)[0], 0.2f) << "x " << x;
-  // Without the colour test the shadow's past and future smear over the lit pixels.
+  // Without the colour test and the tile test the shadow's past and future smear over the lit
+  // pixels.
   options.window.colourTolerance = 0.0f;
+  options.window.nearRadius = 0;
   const Image smeared = resolve(scene, frame, options);
   EXPECT_LT(smeared.at(26, 8)[0], out.at(26, 8)[0] - 0.1f);
+}
+
+// A smooth pattern (1 to 3, a period of 7 px) on a still plane whose right 8 px (the second
+// tile of 32) turn 30% brighter from frame 12 on, as under a light coming up: less than each
+// pixel's own colour test can tell from the pattern's spread, plain when pooled over a tile.
+Scene patternBrighteningOnTheRight() {
+  Scene scene;
+  scene.trace = [](int frame, double x, double, double&) {
+    const double pattern = 2.0 + std::sin(0.9 * x);
+    return Hit{float(pattern * (x >= 32.0 && frame >= 12 ? 1.3 : 1.0)), 5.0};
+  };
+  return scene;
+}
+
+double meanError(const Scene& scene, const Image& out, int frame, int x0, int x1) {
+  double sum = 0.0;
+  int count = 0;
+  for (int y = 2; y < kHeight - 2; ++y) {
+    for (int x = x0; x < x1; ++x, ++count) {
+      sum += std::fabs(out.at(x, y)[0] - truth(scene, frame, x, y));
+    }
+  }
+  return sum / count;
+}
+
+TEST_F(WindowTest, TheTileTestEndsTheWindowWhereShadingChangesAndKeepsItWhereItHolds) {
+  const Scene scene = patternBrighteningOnTheRight();
+  const int frame = 8;  // frames 12..14 of its window (K 6) are brighter on the right
+  ResolveOptions options = windowOptions(6);
+  options.window.nearRadius = 2;
+  options.window.movingRadius = 0;
+  const Image tiles = resolve(scene, frame, options);
+  options.window.nearRadius = 0;
+  const Image whole = resolve(scene, frame, options);
+  // The right tile stops short of the brighter frames (its reach filtered with the left
+  // tile's towards x = 16); the whole window lets them in.
+  EXPECT_LT(meanError(scene, tiles, frame, 36, 40), 0.6 * meanError(scene, whole, frame, 36, 40));
+  // The left tile, whose frames all agree, reaches the whole window: where its reach is its
+  // own (x <= 16), the same bits.
+  for (int y = 0; y < kHeight; ++y) {
+    for (int x = 0; x < 16; ++x) {
+      ASSERT_EQ(tiles.at(x, y)[0], whole.at(x, y)[0]) << x << "," << y;
+    }
+  }
 }
 
 // Each frame depends on its window alone: a resolver that has seen the whole shot and one

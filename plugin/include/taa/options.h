@@ -62,13 +62,13 @@ enum class ResolveMode {
 struct WindowOptions {
   // K: frames used on each side of the resolved frame (2K+1 in all), 0..16. The window stops
   // at the shot's ends (gaps, reset frames). Memory grows with it: 2K+1 frames are kept.
-  int radius = 4;
+  int radius = 16;
   // Pixels: standard deviation of the Gaussian weighting a carried sample by its distance to
   // the output pixel's centre. Smaller is sharper and noisier. Typical 0.3 .. 0.6.
   float sigma = 0.35f;
   // Frames: temporal weight exp(-(distance / falloff)^2), a Gaussian falloff over the window;
   // 0 weighs every frame alike.
-  float falloff = 0.0f;
+  float falloff = 14.0f;
   // Also weigh frames by a Hann taper over the window, cos^2(pi/2 distance / (K + 1)): frames
   // enter and leave the moving window gently, so the output does not step when they do.
   bool taper = false;
@@ -97,6 +97,15 @@ struct WindowOptions {
   // what the nearer frames gave (the colour test): a long window where the shot holds still,
   // a short one where shading changes.
   bool adaptive = false;
+  // Frames each side always used; with 0 < near < radius, each side of a 32 px tile's window
+  // reaches on, frame by frame, while the farther frame's samples agree with t's over the tile
+  // (resolve/window_tiles): a long window where the shading holds still, a short one where it
+  // changes. 0: the whole window everywhere.
+  int nearRadius = 2;
+  // Frames each side whose moving samples count, and all the samples of a pixel whose own 3x3
+  // at t has a moving one: a moving object's chains stay short, and static samples of farther
+  // frames would outweigh its own at its edges. 0: the whole window.
+  int movingRadius = 4;
 };
 
 enum class Reconstruction { Centre, BlackmanHarris, Lanczos2 };

@@ -18,6 +18,8 @@ constexpr const char* kMode = "mode";
 // The Mode choice's entries, as the option registry names them.
 const char* const kModeNames[] = {"history", "window"};
 constexpr const char* kWindowRadius = "window";
+constexpr const char* kWindowNear = "windowNear";
+constexpr const char* kWindowMoving = "windowMoving";
 constexpr const char* kWindowSigma = "windowSigma";
 constexpr const char* kWindowFalloff = "windowFalloff";
 constexpr const char* kWindowTaper = "windowTaper";
@@ -152,7 +154,7 @@ void require(taa_node* node, taa_status status) {
 
 bool PluginSettings::operator==(const PluginSettings& o) const {
   auto tie = [](const PluginSettings& s) {
-    return std::tie(s.mode, s.windowRadius, s.windowSigma, s.windowFalloff, s.windowTaper,
+    return std::tie(s.mode, s.windowRadius, s.windowNear, s.windowMoving, s.windowSigma, s.windowFalloff, s.windowTaper,
                     s.windowColourTolerance, s.windowStaticTolerance,
                     s.windowReconstructionWeight, s.blend, s.rectify, s.dilateMotion, s.jitter,
                     s.jitterOffset, s.jitterPeriod, s.motionY, s.motionTo, s.motionScale,
@@ -171,15 +173,25 @@ void defineParameters(OfxParamSetHandle set) {
                {"History", "Window"}, registryDefaultIndex("mode", kModeNames, 2));
   const taa::WindowOptions window;
   defineInt(set, kWindowRadius, "Window (K)",
-            "Window mode: frames used on each side of the resolved frame; 2K+1 are kept in "
-            "memory per render thread (taatool --window).",
+            "Window mode: frames used on each side of the resolved frame at most; 2K+1 are kept "
+            "in memory per render thread (taatool --window).",
             window.radius, 0, 16);
+  defineInt(set, kWindowNear, "Window Near",
+            "Window mode: frames each side always used; each 32 px tile's window reaches "
+            "farther, up to K, while those frames agree with the resolved one over the tile; 0 "
+            "uses the whole window everywhere (taatool --window-near).",
+            window.nearRadius, 0, 16);
+  defineInt(set, kWindowMoving, "Window Moving",
+            "Window mode: frames each side whose moving samples count, and every sample of a "
+            "pixel where the resolved frame has a moving one; 0: the whole window (taatool "
+            "--window-moving).",
+            window.movingRadius, 0, 16);
   defineDouble(set, kWindowSigma, "Window Sigma",
                "Window mode: pixels, the Gaussian weighting a sample by its distance to the pixel "
                "centre; smaller is sharper and noisier (taatool --window-sigma).",
                double(window.sigma), 0.05, 4.0);
   defineDouble(set, kWindowFalloff, "Window Falloff",
-               "Window mode: frames, weight 1/(1+(distance/falloff)^2) by distance in time; 0 "
+               "Window mode: frames, weight exp(-(distance/falloff)^2) by distance in time; 0 "
                "weighs every frame alike (taatool --window-falloff).",
                double(window.falloff), 0.0, 1000.0);
   defineBoolean(set, kWindowTaper, "Window Taper",
@@ -302,6 +314,8 @@ PluginSettings readSettings(OfxImageEffectHandle effect, OfxTime time) {
   PluginSettings s;
   s.mode = getInt(set, kMode, time);
   s.windowRadius = getInt(set, kWindowRadius, time);
+  s.windowNear = getInt(set, kWindowNear, time);
+  s.windowMoving = getInt(set, kWindowMoving, time);
   s.windowSigma = getDouble(set, kWindowSigma, time);
   s.windowFalloff = getDouble(set, kWindowFalloff, time);
   s.windowTaper = getInt(set, kWindowTaper, time) != 0;
@@ -334,6 +348,8 @@ void applySettings(taa_node* node, const PluginSettings& s, RenderScale scale) {
   }
   require(node, taa_node_set_string(node, "mode", kModeNames[s.mode]));
   require(node, taa_node_set_int(node, "window", s.windowRadius));
+  require(node, taa_node_set_int(node, "window-near", s.windowNear));
+  require(node, taa_node_set_int(node, "window-moving", s.windowMoving));
   require(node, taa_node_set_float(node, "window-sigma", float(s.windowSigma)));
   require(node, taa_node_set_float(node, "window-falloff", float(s.windowFalloff)));
   require(node, taa_node_set_string(node, "window-taper", s.windowTaper ? "on" : "off"));

@@ -20,6 +20,8 @@ struct PluginSettings {
                                                                      : kModeHistory;  // --mode
   // Window mode (--window, --window-sigma, ...); defaults are the library's.
   int windowRadius = taa::WindowOptions{}.radius;
+  int windowNear = taa::WindowOptions{}.nearRadius;
+  int windowMoving = taa::WindowOptions{}.movingRadius;
   double windowSigma = taa::WindowOptions{}.sigma;
   double windowFalloff = taa::WindowOptions{}.falloff;
   bool windowTaper = taa::WindowOptions{}.taper;

@@ -94,6 +94,18 @@ Entry windowNumberOption(OptionInfo info, float lo, float hi, float WindowOption
   return e;
 }
 
+// A count of frames each side, 0..16, of the window resolve (ResolveOptions::window).
+Entry windowFramesOption(OptionInfo info, int WindowOptions::*field) {
+  Entry e{info, {}, {}};
+  e.set = [field, name = info.name](ResolveOptions& o, const std::string& v) {
+    const int k = parseInteger(name, v, 0);
+    if (k > 16) reject(name, v, "an integer in [0, 16]");
+    o.window.*field = k;
+  };
+  e.get = [field](const ResolveOptions& o) { return std::to_string(o.window.*field); };
+  return e;
+}
+
 // An on|off setting of the window resolve (ResolveOptions::window).
 Entry windowSwitchOption(OptionInfo info, bool WindowOptions::*field) {
   info.values = "on|off";
@@ -146,17 +158,20 @@ std::vector<Entry> makeEntries() {
        "gives the same frames)"},
       {{"history", ResolveMode::History}, {"window", ResolveMode::Window}},
       &ResolveOptions::mode));
-  {
-    Entry e{{"window", "Mode", "0..16", "", "window mode: K, the frames used on each side of "
-             "the resolved frame (2K+1 kept in memory); stops at the shot's ends"}, {}, {}};
-    e.set = [](ResolveOptions& o, const std::string& v) {
-      const int k = parseInteger("window", v, 0);
-      if (k > 16) reject("window", v, "an integer in [0, 16]");
-      o.window.radius = k;
-    };
-    e.get = [](const ResolveOptions& o) { return std::to_string(o.window.radius); };
-    entries.push_back(e);
-  }
+  entries.push_back(windowFramesOption(
+      {"window", "Mode", "0..16", "", "window mode: K, the frames used on each side of the "
+       "resolved frame at most (2K+1 kept in memory); stops at the shot's ends"},
+      &WindowOptions::radius));
+  entries.push_back(windowFramesOption(
+      {"window-near", "Mode", "0..16", "", "window mode: frames each side always used; each "
+       "32 px tile's window reaches farther (up to --window) while those frames agree with t "
+       "over the tile (0: the whole window everywhere)"},
+      &WindowOptions::nearRadius));
+  entries.push_back(windowFramesOption(
+      {"window-moving", "Mode", "0..16", "", "window mode: frames each side whose moving "
+       "samples count, and every sample of a pixel where t has a moving one (0: the whole "
+       "window)"},
+      &WindowOptions::movingRadius));
   entries.push_back(windowNumberOption(
       {"window-sigma", "Mode", "", "", "window mode: pixels, the Gaussian weighting a carried "
        "sample by its distance to the pixel centre; smaller is sharper and noisier"},

@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cmath>
+#include <cstdlib>
 #include <functional>
 #include <limits>
 #include <map>
@@ -15,6 +16,7 @@
 #include "gl/objects.h"
 #include "resolve/reconstruction_filter.h"
 #include "resolve/window_frame_weight.h"
+#include "resolve/window_tiles.h"
 #include "taa/error.h"
 #include "util/frame_span.h"
 
@@ -28,8 +30,15 @@ enum TextureUnit : int {
   kColourStageUnit = 0,  // prepare: the staged frame
   kDepthStageUnit,
   kMotionStageUnit,
-  kFirstOcioUnit
+  kFirstOcioUnit,
+  kTileReachUnit = kMotionStageUnit  // gather: the tile test's reach per tile
 };
+
+// The tile test (--window-near): its statistics at every 4th pixel each way (a sixteenth of a
+// gather's cost), pooled over tiles of 32 px (64 pixels each; docs/TUNING.md, "The tile
+// test": every 2nd pixel with 16 px tiles scored no better, at four times the cost).
+constexpr int kStatsStride = 4;
+constexpr int kTileSize = 32;
 
 constexpr int kMaxSources = 32;  // window_gather.frag's MAX_SOURCES: K up to 16
 // Pass groups one gather writes besides the colour and diagnostics: 8 draw buffers, GL's
@@ -68,6 +77,8 @@ void validateOptions(const ResolveOptions& o) {
   if (!(w.colourTolerance >= 0.0f)) throw Error("window colour tolerance must be >= 0");
   if (!(w.staticTolerance >= 0.0f)) throw Error("window static tolerance must be >= 0");
   if (!(w.reconstructionWeight >= 0.0f)) throw Error("window reconstruction weight must be >= 0");
+  if (w.nearRadius < 0) throw Error("window near radius must be >= 0");
+  if (w.movingRadius < 0) throw Error("window moving radius must be >= 0");
   if (!(o.depthTolerance >= 0.0f)) throw Error("depth tolerance must be >= 0");
 }
 
@@ -88,6 +99,10 @@ struct WindowResolver::Impl {
   std::vector<std::string> gatherPrefix[2];
   std::map<std::pair<int, int>, gl::Program> passPrograms;
   gl::AnySamplesQuery movingQuery;
+  // The tile test: the gather with TILE_STATS (by chains), its target, the tiles' sources.
+  gl::Program statsPrograms[2];
+  gl::Texture stats[3], tileReach;
+  gl::Framebuffer statsTarget;
   color::OcioGpuResources toWorkingLuts, fromWorkingLuts;
   color::OcioGpuResources gatherToWorkingLuts;  // linear sums: after fromWorkingLuts' units
 
@@ -187,6 +202,23 @@ struct WindowResolver::Impl {
     }
     movingQuery = gl::AnySamplesQuery(gl);
     passPrograms.clear();
+    for (gl::Program& p : statsPrograms) p = gl::Program();
+  }
+
+  bool tileTest() const {
+    return options.window.nearRadius > 0 && options.window.nearRadius < options.window.radius;
+  }
+
+  const gl::Program& statsProgram(int chains) {
+    gl::Program& p = statsPrograms[chains];
+    if (p.id()) return p;
+    std::vector<std::string> prefix = gatherPrefix[chains];
+    prefix.insert(prefix.begin(), "#define TILE_STATS 1");
+    p = gl::Program(gl, gl::embeddedShaderSource("fullscreen.vert"),
+                    gl::embeddedShaderSource("window_gather.frag", prefix));
+    fromWorkingLuts.setUniforms(p);
+    if (options.window.linear) gatherToWorkingLuts.setUniforms(p);
+    return p;
   }
 
   // The gather with `groups` pass groups (0: the beauty alone; -1: a Cryptomatte set).
@@ -256,6 +288,9 @@ struct WindowResolver::Impl {
     output = gl::Texture(gl, w, h, GL_RGBA32F);
     debug = gl::Texture();
     gatherTarget = gl::Framebuffer();
+    for (gl::Texture& t : stats) t = gl::Texture();
+    statsTarget = gl::Framebuffer();
+    tileReach = gl::Texture();
     ones.clear();
     zeros.clear();
     slots.clear();
@@ -460,7 +495,8 @@ struct WindowResolver::Impl {
     }
   }
 
-  void setGatherUniforms(const gl::Program& p, int frame, int first, int last) {
+  // Returns each source's distance from `frame` in frames, in the gather's order.
+  std::vector<int> setGatherUniforms(const gl::Program& p, int frame, int first, int last) {
     const Slot& target = slots.at(frame);
     p.set("uRing", int(kRingUnit));
     p.set("uRingMotion", int(kRingMotionUnit));
@@ -525,7 +561,7 @@ struct WindowResolver::Impl {
     }
     const int count = int(layers.size());
     p.set("uSourceCount", count);
-    if (count == 0) return;
+    if (count == 0) return offsets;
     p.setIntArray("uSourceLayer", layers.data(), count);
     p.setIntArray("uSourcePassLayer", passLayers.data(), count);
     p.setIntArray("uSourceOffset", offsets.data(), count);
@@ -538,6 +574,54 @@ struct WindowResolver::Impl {
     p.setVec3Array("uToTargetDepthOffset", toTargetDepthOffset.data(), count);
     p.setMatrix3Array("uFromTargetAlong", fromTargetAlong.data(), count);
     p.setMatrix3Array("uFromTargetOffset", fromTargetOffset.data(), count);
+    return offsets;
+  }
+
+  // The tile test: the gather's statistics at every kStatsStride-th pixel (set up and bound by
+  // `setUniforms`, which returns the sources' offsets), pooled per tile into how far each side
+  // of its window reaches (resolve/window_tiles), uploaded for the gather. False when no
+  // source lies beyond the near frames (nothing to decide).
+  bool decideTiles(int chains,
+                   const std::function<std::vector<int>(const gl::Program&)>& setUniforms) {
+    const int statsWidth = (width + kStatsStride - 1) / kStatsStride;
+    const int statsHeight = (height + kStatsStride - 1) / kStatsStride;
+    if (!statsTarget.id()) {
+      for (gl::Texture& t : stats) t = gl::Texture(gl, statsWidth, statsHeight, GL_RGBA32F);
+      statsTarget = gl::Framebuffer(gl, std::vector<gl::Attachment>{&stats[0], &stats[1],
+                                                                     &stats[2]});
+    }
+    const gl::Program& p = statsProgram(chains);
+    statsTarget.bind();
+    const std::vector<int> offsets = setUniforms(p);
+    bool beyond = false;
+    for (int offset : offsets) beyond = beyond || std::abs(offset) > options.window.nearRadius;
+    if (!beyond) return false;
+    p.set("uStatsStride", kStatsStride);
+    triangle.draw();
+    gl::checkError(gl, "window tile statistics pass");
+    // Three codes to a float word, four words to a texel, three texels: source k's code is
+    // byte k % 3 of word k / 3.
+    const std::size_t pixels = std::size_t(statsWidth) * statsHeight;
+    const std::size_t count = offsets.size();
+    std::vector<std::uint8_t> codes(pixels * count);
+    for (int attachment = 0; attachment < 3 && 12 * attachment < int(count); ++attachment) {
+      const std::vector<float> words = statsTarget.readRGBA(attachment);
+      for (std::size_t i = 0; i < pixels; ++i) {
+        for (std::size_t k = 12 * std::size_t(attachment);
+             k < std::min(count, 12 * std::size_t(attachment) + 12); ++k) {
+          const auto word = std::uint32_t(words[4 * i + (k % 12) / 3]);
+          codes[i * count + k] = std::uint8_t(word >> (8 * (k % 3)));
+        }
+      }
+    }
+    const TileReach reach = decideTileReach(codes, statsWidth, statsHeight,
+                                            kTileSize / kStatsStride, offsets,
+                                            options.window.nearRadius);
+    if (tileReach.width() != reach.columns || tileReach.height() != reach.rows) {
+      tileReach = gl::Texture(gl, reach.columns, reach.rows, GL_RG32F, gl::Texture::Filter::Linear);
+    }
+    tileReach.upload(reach.frames.data(), 2);
+    return true;
   }
 
   TypedImage resolve(int frame, int first, int last, SampleType outputType) {
@@ -581,6 +665,34 @@ struct WindowResolver::Impl {
     }
     bool chains = false;
     for (int f : FrameSpan(first, last)) chains = chains || slots.at(f).hasMoving;
+    // The uniforms every draw of the gather shares (the tile test's own draw included).
+    std::vector<int> offsets;
+    auto setUniforms = [&](const gl::Program& p, bool tiles) {
+      p.set("uSigma", options.window.sigma);
+      p.set("uColourTolerance", options.window.colourTolerance);
+      p.set("uDepthTolerance", options.depthTolerance);
+      p.set("uReconstructionWeight", options.window.reconstructionWeight);
+      p.set("uOpaqueMoving", options.window.opaqueMoving ? 1 : 0);
+      p.set("uAdaptive", options.window.adaptive ? 1 : 0);
+      p.set("uTiles", tiles ? 1 : 0);
+      p.set("uTileSize", kTileSize);
+      p.set("uTileReach", int(kTileReachUnit));
+      p.set("uMovingRadius", options.window.movingRadius);
+      // The output clamped to what its type holds (glsl/finite_range.glsl).
+      p.set("uOutputLimit", outputType == SampleType::Half ? 65504.0f
+                                                           : std::numeric_limits<float>::max());
+      offsets = setGatherUniforms(p, frame, first, last);
+      p.use();
+      ring.bind(kRingUnit);
+      ringMotion.bind(kRingMotionUnit);
+      fromWorkingLuts.bind();
+      gatherToWorkingLuts.bind();
+      if (tiles) tileReach.bind(kTileReachUnit);
+    };
+    const bool tiles = tileTest() && decideTiles(chains ? 1 : 0, [&](const gl::Program& p) {
+                         setUniforms(p, false);
+                         return offsets;
+                       });
     // One draw of the gather into `target`; `variant` as gatherProgram's; `bindExtra` binds the
     // draw's own inputs. With passes, each draw weighs the samples as the beauty's draw does
     // (the same program text and uniforms but for its outputs: the same weights, bit for bit),
@@ -588,22 +700,8 @@ struct WindowResolver::Impl {
     auto drawGather = [&](int variant, const gl::Framebuffer& target,
                           const std::function<void(const gl::Program&)>& bindExtra) {
       const gl::Program& p = gatherProgram(chains ? 1 : 0, variant);
-      p.set("uSigma", options.window.sigma);
-      p.set("uColourTolerance", options.window.colourTolerance);
-      p.set("uDepthTolerance", options.depthTolerance);
-      p.set("uReconstructionWeight", options.window.reconstructionWeight);
-      p.set("uOpaqueMoving", options.window.opaqueMoving ? 1 : 0);
-      p.set("uAdaptive", options.window.adaptive ? 1 : 0);
-      // The output clamped to what its type holds (glsl/finite_range.glsl).
-      p.set("uOutputLimit", outputType == SampleType::Half ? 65504.0f
-                                                           : std::numeric_limits<float>::max());
-      setGatherUniforms(p, frame, first, last);
       target.bind();
-      p.use();
-      ring.bind(kRingUnit);
-      ringMotion.bind(kRingMotionUnit);
-      fromWorkingLuts.bind();
-      gatherToWorkingLuts.bind();
+      setUniforms(p, tiles);
       bindExtra(p);
       triangle.draw();
       gl::checkError(gl, "window gather pass");
