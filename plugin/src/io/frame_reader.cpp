@@ -428,18 +428,22 @@ void addPassthroughRead(PartReads& reads, OpenExr& file, int part,
 }
 
 // Every channel of the color part but the color's own and those dropped (of a one-part
-// multi-view file: of the layout's view): the passes resolved beside the beauty
-// (AovLayout::passes), read whole or handed to `passBands` band by band.
-void addPassesRead(PartReads& reads, OpenExr& file, int part, const AovLayout& layout, int frame,
-                   ExtraChannels& passes, const PassBandReceiver& passBands) {
+// multi-view file: of the layout's view): the passes resolved beside the beauty.
+ExtraChannels passChannels(const OIIO::ImageSpec& spec, const AovLayout& layout) {
   const std::vector<ChannelKindRule> rules = passRulesOf(layout);
-  const OIIO::ImageSpec& spec = file.parts[std::size_t(part)];
   const auto& color = layout.color.channels;
-  passes = pickedChannels(spec, [&](const std::string& name) {
+  return pickedChannels(spec, [&](const std::string& name) {
     const bool ofView = layout.view.empty() || viewOfChannel(name, layout.fileViews) == layout.view;
     return ofView && std::find(color.begin(), color.end(), name) == color.end() &&
            channelKind(withoutView(name, layout.view), rules) != ChannelKind::Drop;
   });
+}
+
+// The passes (AovLayout::passes), read whole or handed to `passBands` band by band.
+void addPassesRead(PartReads& reads, OpenExr& file, int part, const AovLayout& layout, int frame,
+                   ExtraChannels& passes, const PassBandReceiver& passBands) {
+  const OIIO::ImageSpec& spec = file.parts[std::size_t(part)];
+  passes = passChannels(spec, layout);
   if (passes.names.empty()) return;
   if (passBands) {
     reads.add(file, part, passes.names, "color", frame, OIIO::TypeFloat, nullptr,
@@ -452,6 +456,18 @@ void addPassesRead(PartReads& reads, OpenExr& file, int part, const AovLayout& l
 }
 
 }  // namespace
+
+PassHeader readPassHeader(const AovLayout& layout, int frame) {
+  if (!layout.passes || layout.color.pattern.empty()) return {};
+  const std::string path = expandFramePattern(layout.color.pattern, frame);
+  FileSet files(frame);
+  OpenExr& file = files.get(path, "color");
+  AovSource requiredColor = layout.color;
+  requiredColor.channels.resize(std::min<std::size_t>(requiredColor.channels.size(), 3));
+  const int part = findPart(file, requiredColor, "color", frame);
+  const OIIO::ImageSpec& spec = file.parts[std::size_t(part)];
+  return {passChannels(spec, layout), spec.width, spec.height};
+}
 
 FrameData readFrame(const AovLayout& layout, int frame, const CameraInputs& cameras,
                     const PassBandReceiver& passBands) {

@@ -98,5 +98,14 @@ using PassBandReceiver =
 FrameData readFrame(const AovLayout& layout, int frame, const CameraInputs& cameras = {},
                     const PassBandReceiver& passBands = {});
 
+// The pass channels readFrame would read for `frame` (AovLayout::passes; none without it), names
+// and types, and the image's size, from the colour file's header alone: a job decides from
+// them how long a window its memory holds.
+struct PassHeader {
+  ExtraChannels channels;
+  int width = 0, height = 0;
+};
+PassHeader readPassHeader(const AovLayout& layout, int frame);
+
 
 }  // namespace taa::io

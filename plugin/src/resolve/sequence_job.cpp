@@ -587,16 +587,60 @@ void describePassKinds(const PassPlan& plan, const std::vector<std::string>& nam
   }
 }
 
+// The most the window's rings may take, colour and passes of every view (bytes), before a run
+// with passes shortens its window. The colour ring alone takes 20 bytes a pixel a frame (1.4 GB
+// at 1080p and K 16); a Cycles render's every pass adds 136 (3.2 GB at 1080p and K 4, which
+// keeps issue 21's peak of 4 GiB; docs/PERFORMANCE.md).
+constexpr double kRingBudget = 3.25 * 1024 * 1024 * 1024;
+
+// The window's options for a run over `outputs`: the options asked for, or, where the rings of
+// 2K+2 frames with the passes would pass kRingBudget, the longest window that fits (never
+// shorter than --window-near), colour included so that the passes still add up to it. Decided
+// from the first output's header (every frame of a run holds the same channels), so every
+// chunk of a shot decides alike.
+ResolveOptions windowOptionsOf(const JobRun& run, const std::vector<int>& outputs) {
+  ResolveOptions options = run.job.resolve;
+  if (outputs.empty()) return options;
+  double bytesPerPixel = 0.0, pixels = 0.0;
+  bool passes = false;
+  for (const io::AovLayout* layout : run.layouts) {
+    const io::PassHeader header = io::readPassHeader(*layout, outputs.front());
+    bytesPerPixel += 20.0;
+    if (header.channels.names.empty()) continue;
+    passes = true;
+    const PassPlan plan = planPasses(io::passPlanNames(header.channels.names, *layout),
+                                     header.channels.formats, io::passRulesOf(*layout));
+    for (bool half : plan.halfGroups) bytesPerPixel += half ? 8.0 : 16.0;
+    bytesPerPixel += 16.0 * double(plan.cryptomatte.size());
+    pixels = double(header.width) * double(header.height);
+  }
+  const int asked = options.window.radius;
+  const auto ringBytes = [&](int k) { return bytesPerPixel * pixels * double(2 * k + 2); };
+  if (!passes || ringBytes(asked) <= kRingBudget) return options;
+  int k = asked;
+  while (k > options.window.nearRadius && k > 0 && ringBytes(k) > kRingBudget) --k;
+  if (run.callbacks.detail) {
+    run.callbacks.detail("window resolve: the rings of K " + std::to_string(asked) +
+                         " with the passes would take " +
+                         std::to_string(int(ringBytes(asked) / 1e6)) + " MB: K " +
+                         std::to_string(k) + " instead (" +
+                         std::to_string(int(ringBytes(k) / 1e6)) + " MB), colour included");
+  }
+  options.window.radius = k;
+  return options;
+}
+
 void runWindow(JobRun& run, gl::Context& context) {
   const SequenceJob& job = run.job;
   std::vector<int> outputs = job.frames;
   std::sort(outputs.begin(), outputs.end());
+  const ResolveOptions options = windowOptionsOf(run, outputs);
   const WindowPlan plan = planWindows(outputs, job.availableFrames, job.resetFrames,
-                                      job.resolve.window.radius);
+                                      options.window.radius);
   // One ring per view: each view is resolved as if alone.
   std::vector<std::unique_ptr<WindowResolver>> resolvers;
   for (std::size_t v = 0; v < run.layouts.size(); ++v) {
-    resolvers.push_back(std::make_unique<WindowResolver>(context, job.resolve));
+    resolvers.push_back(std::make_unique<WindowResolver>(context, options));
     resolvers.back()->setDebugOutput(job.debugLayers);
   }
   WindowResolver& resolver = *resolvers.front();
