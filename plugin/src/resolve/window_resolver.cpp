@@ -99,7 +99,7 @@ struct WindowResolver::Impl {
   std::vector<std::string> gatherPrefix[2];
   std::map<std::pair<int, int>, gl::Program> passPrograms;
   gl::AnySamplesQuery movingQuery;
-  // The tile test: the gather with TILE_STATS (by chains), its target, the tiles' sources.
+  // The tile test: the gather with TILE_STATS (by chains), its targets, the tiles' reach.
   gl::Program statsPrograms[2];
   gl::Texture stats[3], tileReach;
   gl::Framebuffer statsTarget;
@@ -618,7 +618,8 @@ struct WindowResolver::Impl {
                                             kTileSize / kStatsStride, offsets,
                                             options.window.nearRadius);
     if (tileReach.width() != reach.columns || tileReach.height() != reach.rows) {
-      tileReach = gl::Texture(gl, reach.columns, reach.rows, GL_RG32F, gl::Texture::Filter::Linear);
+      tileReach =
+          gl::Texture(gl, reach.columns, reach.rows, GL_RG32F, gl::Texture::Filter::Linear);
     }
     tileReach.upload(reach.frames.data(), 2);
     return true;
