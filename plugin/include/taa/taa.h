@@ -203,7 +203,9 @@ typedef struct taa_pass {
 /* taa_node_push_frame with the frame's `count` passes. Every frame in the ring carries the same
  * channels: pushing other names, kinds or types (or none) empties the ring of the frames pushed
  * with the old ones. count 0: none (taa_node_push_frame). History mode: TAA_ERROR_INVALID_ARGUMENT
- * (the message names "mode" = "window"). */
+ * (the message names "mode" = "window"). The ring holds every pass of its frames: where 2K+2
+ * frames with these passes would take more than 3.25 GiB, the node's window is the longest that
+ * fits (not shorter than "window-near"), as taatool's is, and its ring holds 2K+1 of those. */
 TAA_API taa_status taa_node_push_frame_passes(taa_node* node, const taa_frame* frame,
                                               const taa_pass* passes, int count);
 

@@ -40,25 +40,59 @@ std::string sizeText(int width, int height) {
 
 }  // namespace
 
-WindowFrames::WindowFrames(gl::Context& context, const ResolveOptions& options)
+WindowFrames::WindowFrames(gl::Context& context, const ResolveOptions& options,
+                           double ringBudget)
     : context_(context),
       options_(options),
       optionsText_(textOf(options)),
+      ringBudget_(ringBudget),
+      radius_(options.window.radius),
       resolver_(std::make_unique<WindowResolver>(context, options)) {}
 
 WindowFrames::~WindowFrames() = default;
 
+int WindowFrames::radiusFor(const ResolveOptions& options, int width, int height) const {
+  const bool withPasses = passPlan_ && !passPlan_->names.empty();
+  const double frameBytes =
+      ringBytesPerPixel(withPasses ? &*passPlan_ : nullptr) * double(width) * double(height);
+  return windowRadiusWithinBudget(options.window.radius, options.window.nearRadius, frameBytes,
+                                  withPasses, ringBudget_);
+}
+
+std::unique_ptr<WindowResolver> WindowFrames::makeResolver(const ResolveOptions& options,
+                                                           int radius) const {
+  ResolveOptions within = options;
+  within.window.radius = radius;
+  auto resolver = std::make_unique<WindowResolver>(context_, within);
+  if (passPlan_) resolver->setPasses(passPlan_->halfGroups, int(passPlan_->cryptomatte.size()));
+  return resolver;
+}
+
 void WindowFrames::setOptions(const ResolveOptions& options) {
   std::string text = textOf(options);
   if (text == optionsText_) return;
-  auto resolver = std::make_unique<WindowResolver>(context_, options);
+  const int radius = size_ ? radiusFor(options, size_->first, size_->second)
+                           : options.window.radius;
+  auto resolver = makeResolver(options, radius);
   for (int frame : std::set<int>(ring_)) {
     remove(frame, "removed when a resolve parameter changed (the ring starts empty)");
   }
   resolver_ = std::move(resolver);
-  if (passPlan_) resolver_->setPasses(passPlan_->halfGroups, int(passPlan_->cryptomatte.size()));
+  radius_ = radius;
   options_ = options;
   optionsText_ = std::move(text);
+}
+
+void WindowFrames::fitRing(int width, int height, const std::string& pushed) {
+  const int radius = radiusFor(options_, width, height);
+  if (radius == radius_) return;
+  auto resolver = makeResolver(options_, radius);
+  for (int held : std::set<int>(ring_)) {
+    remove(held, "removed when " + pushed + ": with its passes the ring holds K " +
+                     std::to_string(radius) + " (memory), not " + std::to_string(radius_));
+  }
+  resolver_ = std::move(resolver);
+  radius_ = radius;
 }
 
 void WindowFrames::remove(int frame, const std::string& why) {
@@ -122,6 +156,7 @@ void WindowFrames::push(int frame, const ResolveInput& input, bool startsShot,
   if (ring_.count(frame)) remove(frame, "");  // replaced below
   const std::string pushed = "frame " + std::to_string(frame) + " was pushed";
   usePasses(std::move(plan), pushed);
+  fitRing(width, height, pushed);
   if (newSize) {
     for (int held : std::set<int>(ring_)) {
       remove(held, "removed when " + pushed + " with another size, starting a shot");
@@ -178,7 +213,7 @@ TypedImage WindowFrames::resolve(int frame, SampleType outputType) {
   // taatool's rule on the frames pushed so far: consecutive frames within K, in one shot.
   const WindowPlan plan =
       planWindows({frame}, std::vector<int>(known_.begin(), known_.end()), shotStarts_,
-                  options_.window.radius);
+                  radius_);
   const FrameWindow window = plan.windows.at(frame);
   // The frame itself first: its absence says more than a neighbour's.
   if (!ring_.count(frame)) {

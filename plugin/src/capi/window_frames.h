@@ -15,6 +15,7 @@
 #include "gl/context.h"
 #include "io/channel_kinds.h"
 #include "resolve/pass_plan.h"
+#include "resolve/window_budget.h"
 #include "resolve/window_resolver.h"
 #include "taa/options.h"
 #include "util/image.h"
@@ -38,8 +39,10 @@ struct FramePasses {
 class WindowFrames {
  public:
   // The context must be current for every call, destructor included. Throws taa::Error when
-  // the options are unusable (e.g. a bracket the OCIO config lacks).
-  WindowFrames(gl::Context& context, const ResolveOptions& options);
+  // the options are unusable (e.g. a bracket the OCIO config lacks). `ringBudget`: the bytes
+  // the rings of frames with passes may take (resolve/window_budget; tests give less).
+  WindowFrames(gl::Context& context, const ResolveOptions& options,
+               double ringBudget = kWindowRingBudget);
   ~WindowFrames();
   WindowFrames(const WindowFrames&) = delete;
   WindowFrames& operator=(const WindowFrames&) = delete;
@@ -82,10 +85,20 @@ class WindowFrames {
   // when that changes; `pushed` names the push that asks, for their reason.
   void usePasses(std::optional<PassPlan> plan, const std::string& pushed);
   std::string missingMessage(int missing, int frame, int first, int last) const;
+  // K under `options` for frames of `width` x `height` with the ring's passes: taatool's rule
+  // (resolve/window_budget), so a node's frame is still taatool's.
+  int radiusFor(const ResolveOptions& options, int width, int height) const;
+  // A resolver of `options` with K `radius`, set up for the ring's passes.
+  std::unique_ptr<WindowResolver> makeResolver(const ResolveOptions& options, int radius) const;
+  // Gives the ring the K its frames' passes and size allow, emptying it when that changes;
+  // `pushed` names the push that asks, for their reason.
+  void fitRing(int width, int height, const std::string& pushed);
 
   gl::Context& context_;
   ResolveOptions options_;
   std::string optionsText_;  // every option's value: equal texts are equal options
+  double ringBudget_;
+  int radius_;  // K in use: options_' K, shortened where the passes' rings would not fit
   std::unique_ptr<WindowResolver> resolver_;
   std::set<int> ring_;                    // frames the resolver holds
   std::map<int, FrameMatrices> matrices_; // of the frames in the ring

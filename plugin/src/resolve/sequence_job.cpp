@@ -22,6 +22,7 @@
 #include "resolve/projection_jitter.h"
 #include "resolve/frame_queues.h"
 #include "resolve/resolver.h"
+#include "resolve/window_budget.h"
 #include "resolve/window_plan.h"
 #include "resolve/window_resolver.h"
 #include "taa/error.h"
@@ -587,44 +588,38 @@ void describePassKinds(const PassPlan& plan, const std::vector<std::string>& nam
   }
 }
 
-// The most the window's rings may take, colour and passes of every view (bytes), before a run
-// with passes shortens its window. The colour ring alone takes 20 bytes a pixel a frame (1.4 GB
-// at 1080p and K 16); a Cycles render's every pass adds 136 (3.2 GB at 1080p and K 4, which
-// keeps issue 21's peak of 4 GiB; docs/PERFORMANCE.md).
-constexpr double kRingBudget = 3.25 * 1024 * 1024 * 1024;
-
-// The window's options for a run over `outputs`: the options asked for, or, where the rings of
-// 2K+2 frames with the passes would pass kRingBudget, the longest window that fits (never
-// shorter than --window-near), colour included so that the passes still add up to it. Decided
-// from the first output's header (every frame of a run holds the same channels), so every
-// chunk of a shot decides alike.
+// The window's options for a run over `outputs`: the options asked for, or, where the rings
+// with the passes would not fit (resolve/window_budget), the longest window that does, colour
+// included so that the passes still add up to it. Decided from the first output's header (every
+// frame of a run holds the same channels), so every chunk of a shot decides alike.
 ResolveOptions windowOptionsOf(const JobRun& run, const std::vector<int>& outputs) {
   ResolveOptions options = run.job.resolve;
   if (outputs.empty()) return options;
+  // Every view's rings, at the size of the views with passes (a header is read only for those;
+  // the views of a file share one size).
   double bytesPerPixel = 0.0, pixels = 0.0;
   bool passes = false;
   for (const io::AovLayout* layout : run.layouts) {
     const io::PassHeader header = io::readPassHeader(*layout, outputs.front());
-    bytesPerPixel += 20.0;
-    if (header.channels.names.empty()) continue;
-    passes = true;
-    const PassPlan plan = planPasses(io::passPlanNames(header.channels.names, *layout),
-                                     header.channels.formats, io::passRulesOf(*layout));
-    for (bool half : plan.halfGroups) bytesPerPixel += half ? 8.0 : 16.0;
-    bytesPerPixel += 16.0 * double(plan.cryptomatte.size());
-    pixels = double(header.width) * double(header.height);
+    std::optional<PassPlan> plan;
+    if (!header.channels.names.empty()) {
+      passes = true;
+      plan = planPasses(io::passPlanNames(header.channels.names, *layout),
+                        header.channels.formats, io::passRulesOf(*layout));
+      pixels = std::max(pixels, double(header.width) * double(header.height));
+    }
+    bytesPerPixel += ringBytesPerPixel(plan ? &*plan : nullptr);
   }
+  const double frameBytes = bytesPerPixel * pixels;
   const int asked = options.window.radius;
-  const auto ringBytes = [&](int k) { return bytesPerPixel * pixels * double(2 * k + 2); };
-  if (!passes || ringBytes(asked) <= kRingBudget) return options;
-  int k = asked;
-  while (k > options.window.nearRadius && k > 0 && ringBytes(k) > kRingBudget) --k;
-  if (run.callbacks.detail) {
+  const int k = windowRadiusWithinBudget(asked, options.window.nearRadius, frameBytes, passes);
+  if (k != asked && run.callbacks.detail) {
     run.callbacks.detail("window resolve: the rings of K " + std::to_string(asked) +
                          " with the passes would take " +
-                         std::to_string(int(ringBytes(asked) / 1e6)) + " MB: K " +
-                         std::to_string(k) + " instead (" +
-                         std::to_string(int(ringBytes(k) / 1e6)) + " MB), colour included");
+                         std::to_string(int(windowRingBytes(asked, frameBytes) / 1e6)) +
+                         " MB: K " + std::to_string(k) + " instead (" +
+                         std::to_string(int(windowRingBytes(k, frameBytes) / 1e6)) +
+                         " MB), colour included");
   }
   options.window.radius = k;
   return options;
