@@ -4,6 +4,7 @@
 #include <functional>
 #include <map>
 #include <sstream>
+#include <utility>
 
 #include "taa/error.h"
 #include "util/number_text.h"
@@ -106,37 +107,32 @@ Entry windowFramesOption(OptionInfo info, int WindowOptions::*field) {
   return e;
 }
 
-// An on|off setting of the window resolve (ResolveOptions::window).
-Entry windowSwitchOption(OptionInfo info, bool WindowOptions::*field) {
+// An on|off setting; `flag(options)` is the bool it sets (a generic lambda: it is called on
+// const options too).
+template <typename Flag>
+Entry onOffOption(OptionInfo info, Flag flag) {
   info.values = "on|off";
   Entry e{info, {}, {}};
-  e.set = [field, name = info.name](ResolveOptions& o, const std::string& v) {
+  e.set = [flag, name = info.name](ResolveOptions& o, const std::string& v) {
     if (v == "on" || v == "1") {
-      o.window.*field = true;
+      flag(o) = true;
     } else if (v == "off" || v == "0") {
-      o.window.*field = false;
+      flag(o) = false;
     } else {
       reject(name, v, "on or off");
     }
   };
-  e.get = [field](const ResolveOptions& o) { return std::string(o.window.*field ? "on" : "off"); };
+  e.get = [flag](const ResolveOptions& o) { return std::string(flag(o) ? "on" : "off"); };
   return e;
 }
 
+// An on|off setting of the window resolve (ResolveOptions::window).
+Entry windowSwitchOption(OptionInfo info, bool WindowOptions::*field) {
+  return onOffOption(std::move(info), [field](auto& o) -> auto& { return o.window.*field; });
+}
+
 Entry switchOption(OptionInfo info, bool ResolveOptions::*field) {
-  info.values = "on|off";
-  Entry e{info, {}, {}};
-  e.set = [field, name = info.name](ResolveOptions& o, const std::string& v) {
-    if (v == "on" || v == "1") {
-      o.*field = true;
-    } else if (v == "off" || v == "0") {
-      o.*field = false;
-    } else {
-      reject(name, v, "on or off");
-    }
-  };
-  e.get = [field](const ResolveOptions& o) { return std::string(o.*field ? "on" : "off"); };
-  return e;
+  return onOffOption(std::move(info), [field](auto& o) -> auto& { return o.*field; });
 }
 
 Entry textOption(OptionInfo info, std::string ColorOptions::*field) {
@@ -180,21 +176,10 @@ std::vector<Entry> makeEntries() {
       {"window-falloff", "Mode", "", "", "window mode: frames, weight exp(-(distance/falloff)^2) "
        "by distance in time (0: every frame alike)"},
       0.0f, kNoLimit, &WindowOptions::falloff));
-  {
-    Entry e{{"window-taper", "Mode", "on|off", "", "window mode: weigh frames by a Hann taper "
-             "over the window, so frames enter and leave it gently (steadier output)"}, {}, {}};
-    e.set = [](ResolveOptions& o, const std::string& v) {
-      if (v == "on" || v == "1") {
-        o.window.taper = true;
-      } else if (v == "off" || v == "0") {
-        o.window.taper = false;
-      } else {
-        reject("window-taper", v, "on or off");
-      }
-    };
-    e.get = [](const ResolveOptions& o) { return std::string(o.window.taper ? "on" : "off"); };
-    entries.push_back(e);
-  }
+  entries.push_back(windowSwitchOption(
+      {"window-taper", "Mode", "", "", "window mode: weigh frames by a Hann taper over the "
+       "window, so frames enter and leave it gently (steadier output)"},
+      &WindowOptions::taper));
   entries.push_back(windowNumberOption(
       {"window-colour-tolerance", "Mode", "", "", "window mode: standard deviations a carried "
        "sample may stray from what the pixel gathered from nearer frames; smaller keeps moving "
