@@ -572,7 +572,9 @@ void main() {
       aheadOpen = aheadOpen && !(closes && offsetFrames > 0);
       gSum += agreement * frameWeight * gSourceSum;
 #if PASS_GROUPS > 0
-      for (int g = 0; g < PASS_GROUPS; ++g) gPassSum[g] += agreement * frameWeight * gSourcePassSum[g];
+      for (int g = 0; g < PASS_GROUPS; ++g) {
+        gPassSum[g] += agreement * frameWeight * gSourcePassSum[g];
+      }
 #endif
 #if CRYPTOMATTE
       cryptoSourceEnd(agreement * frameWeight);

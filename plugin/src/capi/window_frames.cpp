@@ -88,8 +88,8 @@ void WindowFrames::fitRing(int width, int height, const std::string& pushed) {
   if (radius == radius_) return;
   auto resolver = makeResolver(options_, radius);
   for (int held : std::set<int>(ring_)) {
-    remove(held, "removed when " + pushed + ": with its passes the ring holds K " +
-                     std::to_string(radius) + " (memory), not " + std::to_string(radius_));
+    remove(held, "removed when " + pushed + ": its passes' memory makes the window K " +
+                     std::to_string(radius) + ", not " + std::to_string(radius_));
   }
   resolver_ = std::move(resolver);
   radius_ = radius;

@@ -103,6 +103,9 @@ struct WindowResolver::Impl {
   gl::Program statsPrograms[2];
   gl::Texture stats[3], tileReach;
   gl::Framebuffer statsTarget;
+  // The statistics read back, and unpacked to a code per pixel and source: kept between frames.
+  std::vector<float> statsWords;
+  std::vector<std::uint8_t> statsCodes;
   color::OcioGpuResources toWorkingLuts, fromWorkingLuts;
   color::OcioGpuResources gatherToWorkingLuts;  // linear sums: after fromWorkingLuts' units
 
@@ -603,18 +606,19 @@ struct WindowResolver::Impl {
     // byte k % 3 of word k / 3.
     const std::size_t pixels = std::size_t(statsWidth) * statsHeight;
     const std::size_t count = offsets.size();
-    std::vector<std::uint8_t> codes(pixels * count);
+    statsCodes.resize(pixels * count);
+    statsWords.resize(pixels * 4);
     for (int attachment = 0; attachment < 3 && 12 * attachment < int(count); ++attachment) {
-      const std::vector<float> words = statsTarget.readRGBA(attachment);
+      statsTarget.readRGBA(statsWords.data(), GL_FLOAT, attachment);
       for (std::size_t i = 0; i < pixels; ++i) {
         for (std::size_t k = 12 * std::size_t(attachment);
              k < std::min(count, 12 * std::size_t(attachment) + 12); ++k) {
-          const auto word = std::uint32_t(words[4 * i + (k % 12) / 3]);
-          codes[i * count + k] = std::uint8_t(word >> (8 * (k % 3)));
+          const auto word = std::uint32_t(statsWords[4 * i + (k % 12) / 3]);
+          statsCodes[i * count + k] = std::uint8_t(word >> (8 * (k % 3)));
         }
       }
     }
-    const TileReach reach = decideTileReach(codes, statsWidth, statsHeight,
+    const TileReach reach = decideTileReach(statsCodes, statsWidth, statsHeight,
                                             kTileSize / kStatsStride, offsets,
                                             options.window.nearRadius);
     if (tileReach.width() != reach.columns || tileReach.height() != reach.rows) {
