@@ -1,6 +1,6 @@
-// How long a window the rings can hold: a window resolve with passes keeps every pass of 2K+2
-// frames on the GPU (the ring's 2K+1 and the frame read next), which at 1080p with every Cycles
-// pass and K 16 would take 11 GB. Every face (taatool, taa-farm, the C ABI, Python, OpenFX)
+// How long a window the rings can hold: a window resolve with passes keeps every pass of its
+// ring's 2K+1 frames on the GPU; the rule counts one frame more, the one on its way in. At 1080p
+// with every Cycles pass and K 16 that would be 11 GB. Every face (taatool, taa-farm, the C ABI, Python, OpenFX)
 // shortens such a window by the same rule, so a node's frame is still taatool's.
 #pragma once
 
