@@ -546,8 +546,7 @@ void main() {
     // is not there (hidden, or gone).
     bool continues = alive && onScreen(at) &&
                      ringDepth(texelFetch(uRing, ivec3(atClamped, layer), 0)) < 0.0;
-    bool movingInReach = uMovingRadius == 0 || framesAway <= float(uMovingRadius);
-    addMovingBlock(chained, continues && movingInReach);
+    addMovingBlock(chained, continues);
     vec2 atMotion = motionAt(atClamped, layer);
     behind = behindStep && continues ? chained + atMotion : behind;
     velocity = !behindStep && continues ? chained - aheadPrevious : velocity;

@@ -670,8 +670,8 @@ struct WindowResolver::Impl {
     }
     bool chains = false;
     for (int f : FrameSpan(first, last)) chains = chains || slots.at(f).hasMoving;
-    // The uniforms every draw of the gather shares (the tile test's own draw included).
-    std::vector<int> offsets;
+    // The uniforms every draw of the gather shares (the tile test's own draw included); returns
+    // the sources' offsets in frames.
     auto setUniforms = [&](const gl::Program& p, bool tiles) {
       p.set("uSigma", options.window.sigma);
       p.set("uColourTolerance", options.window.colourTolerance);
@@ -686,17 +686,17 @@ struct WindowResolver::Impl {
       // The output clamped to what its type holds (glsl/finite_range.glsl).
       p.set("uOutputLimit", outputType == SampleType::Half ? 65504.0f
                                                            : std::numeric_limits<float>::max());
-      offsets = setGatherUniforms(p, frame, first, last);
+      std::vector<int> offsets = setGatherUniforms(p, frame, first, last);
       p.use();
       ring.bind(kRingUnit);
       ringMotion.bind(kRingMotionUnit);
       fromWorkingLuts.bind();
       gatherToWorkingLuts.bind();
       if (tiles) tileReach.bind(kTileReachUnit);
+      return offsets;
     };
     const bool tiles = tileTest() && decideTiles(chains ? 1 : 0, [&](const gl::Program& p) {
-                         setUniforms(p, false);
-                         return offsets;
+                         return setUniforms(p, false);
                        });
     // One draw of the gather into `target`; `variant` as gatherProgram's; `bindExtra` binds the
     // draw's own inputs. With passes, each draw weighs the samples as the beauty's draw does
