@@ -6,6 +6,11 @@
 # them with every pass on: light and colour half, data float), resolved with the passes and with the colour alone (--aov '*=drop').
 # Prints seconds, frames/s and peak RSS of each. Needs oiiotool and GNU time.
 #   FRAMES   frames resolved (default 1-12)
+#   STEADY=1 the steady state instead: the cached frames linked forward and back into a
+#            64-frame sequence (1-10, 9-2, 1-10, ...), so that every output has a full window
+#            (the colour's default reaches 16 frames each side, more than the cache holds);
+#            each run resolves frames 17-24 and 17-32 and the figure is the difference over 8
+#            (seconds a frame, the start-up and the first window's reads cancelled)
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 taatool="${TAATOOL:-$root/build/bin/taatool}"
@@ -43,5 +48,35 @@ run() {
   local count; count=$(ls "$work/out-$name" | wc -l)
   echo "$name: $count frames in ${seconds} s ($(/usr/bin/python3 -c "print(round($count/$seconds,2))") frames/s), peak RSS $(( $(cat "$work/rss-$name") / 1024 )) MiB"
 }
+steady() {
+  local name="$1"; shift
+  local linked="$work/steady-input" short long
+  rm -rf "$linked" && mkdir -p "$linked"
+  local cached=("$work"/input.*.exr) order=() frame=1
+  local count=${#cached[@]}
+  while [ ${#order[@]} -lt 64 ]; do  # 0..n-1, n-2..1, 0.. (indices into the cache)
+    for ((i = 0; i < count; ++i)); do order+=("$i"); done
+    for ((i = count - 2; i > 0; --i)); do order+=("$i"); done
+  done
+  for index in "${order[@]:0:64}"; do
+    ln -s "${cached[$index]}" "$linked/input.$(printf %04d $frame).exr"
+    frame=$((frame + 1))
+  done
+  for range in 17-24 17-32; do
+    rm -rf "$work/out-$name"
+    /usr/bin/time -f "%e %M" -o "$work/time-$name-$range" "$taatool" --preset cycles \
+        "$linked/input.####.exr" --frames "$range" -o "$work/out-$name/r.####.exr" -q "$@"
+  done
+  read -r short _ < "$work/time-$name-17-24"
+  read -r long rss < "$work/time-$name-17-32"
+  echo "$name (steady state): 17-24 ${short} s, 17-32 ${long} s:" \
+      "$(/usr/bin/python3 -c "print(round(($long - $short) / 8, 2))") s a frame," \
+      "peak RSS $((rss / 1024)) MiB"
+}
+if [ "${STEADY:-0}" = 1 ]; then
+  steady colour-alone --aov '*=drop'
+  steady every-pass
+  exit 0
+fi
 run colour-alone --aov '*=drop'
 run every-pass
