@@ -211,5 +211,87 @@ TEST(StereoPasses, EachViewResolvesItsOwnPassesAsAFileOfItAlone) {
   EXPECT_NE(both.channel("ViewLayer.DiffCol.right.R"), raw.channel("ViewLayer.DiffCol.right.R"));
 }
 
+// The same render as a file of one part per view (OpenEXR's other multi-view convention, as
+// Nuke writes it): each view's channels without the view, in a part with a `view` attribute.
+// Both views resolve in one run, with their passes, and come out as one multi-view part: the
+// first view's channels under the part's names, the other's with the view in them. Each value
+// is what the one-part file gives the same channel, bit for bit.
+TEST(StereoParts, AFileOfOnePartPerViewResolvesEveryViewWithItsPasses) {
+  const fs::path& render = renderedStereo();
+  const fs::path dir = test::freshTestFolder();
+  const std::vector<std::string> views = {"left", "right"};
+  for (int frame = 1; frame <= kFrames; ++frame) {
+    const Exr input = readExr(render / ("render_" + frameName(frame).substr(2)));
+    std::vector<OIIO::ImageSpec> specs;
+    std::vector<std::vector<float>> parts;
+    for (const std::string& view : views) {
+      const std::string tag = "." + view + ".";
+      OIIO::ImageSpec spec = input.spec;
+      spec.erase_attribute("multiView");
+      spec.attribute("view", view);
+      spec.attribute("name", "ViewLayer." + view);
+      spec.channelnames.clear();
+      spec.channelformats.clear();
+      std::vector<int> picked;
+      for (int c = 0; c < input.spec.nchannels; ++c) {
+        std::string name = input.spec.channelnames[std::size_t(c)];
+        const std::size_t at = name.find(tag);
+        if (at == std::string::npos) continue;
+        picked.push_back(c);
+        spec.channelnames.push_back(name.erase(at, view.size() + 1));
+        spec.channelformats.push_back(input.spec.channelformat(c));
+      }
+      spec.nchannels = int(picked.size());
+      std::vector<float> pixels;
+      for (std::size_t p = 0; p < input.spec.image_pixels(); ++p) {
+        for (int c : picked) {
+          pixels.push_back(input.pixels[p * std::size_t(input.spec.nchannels) + std::size_t(c)]);
+        }
+      }
+      specs.push_back(spec);
+      parts.push_back(std::move(pixels));
+    }
+    const fs::path path = dir / "parts" / frameName(frame);
+    fs::create_directories(path.parent_path());
+    auto out = OIIO::ImageOutput::create(path.string());
+    ASSERT_TRUE(out && out->open(path.string(), int(specs.size()), specs.data()));
+    for (std::size_t part = 0; part < specs.size(); ++part) {
+      if (part > 0) {
+        ASSERT_TRUE(out->open(path.string(), specs[part], OIIO::ImageOutput::AppendSubimage));
+      }
+      ASSERT_TRUE(out->write_image(OIIO::TypeFloat, parts[part].data()));
+    }
+    ASSERT_TRUE(out->close());
+  }
+  auto run = [&](const fs::path& input, const std::string& out) {
+    const test::ToolRun r = test::runTaatool(
+        {"--preset", "cycles", input.string(), "-q", "-o", (dir / out / "r_####.exr").string()},
+        dir);
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+  };
+  run(dir / "parts" / "r_####.exr", "from_parts");
+  run(render / "render_####.exr", "from_one_part");
+  for (int frame = 1; frame <= kFrames; ++frame) {
+    const Exr parts = readExr(dir / "from_parts" / frameName(frame));
+    const Exr onePart = readExr(dir / "from_one_part" / frameName(frame));
+    EXPECT_EQ(multiView(parts.spec), views);
+    // Colour and 12 pass channels a view.
+    EXPECT_EQ(parts.spec.nchannels, 32);
+    for (const std::string& name : onePart.spec.channelnames) {
+      // "ViewLayer.DiffDir.left.R" is the first view's: "ViewLayer.DiffDir.R" in the output of
+      // the parts; the right view's names are the same in both.
+      std::string named = name;
+      if (const std::size_t at = named.find(".left."); at != std::string::npos) {
+        named.erase(at, 5);
+      }
+      EXPECT_EQ(parts.channel(named), onePart.channel(name)) << named << " frame " << frame;
+    }
+  }
+  // The right view's passes are resolved, not copied: the comparison can fail.
+  const Exr raw = readExr(render / "render_0003.exr");
+  const Exr parts = readExr(dir / "from_parts" / frameName(3));
+  EXPECT_NE(parts.channel("ViewLayer.DiffCol.right.R"), raw.channel("ViewLayer.DiffCol.right.R"));
+}
+
 }  // namespace
 }  // namespace taa

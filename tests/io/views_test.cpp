@@ -91,6 +91,11 @@ TEST(Views, OnePartPerView) {
   const AovLayout right = layoutForView(base, views, 1);
   EXPECT_EQ(right.color.part, "rgba.right");
   EXPECT_EQ(right.color.channels, (std::vector<std::string>{"R", "G", "B", "A"}));
+  // Written with the view in its names (the output is one part); its passes its own part's.
+  EXPECT_EQ(right.partView, "right");
+  EXPECT_EQ(layoutForView(base, views, 0).partView, "");
+  base.passes = true;
+  EXPECT_TRUE(layoutForView(base, views, 1).passes);
   EXPECT_EQ(readFrame(right, 1).color.toFloat().pixels[0], 2.0f);
 }
 

@@ -94,6 +94,10 @@ struct AovLayout {
   // a DiffDir). Empty: the file has no views, or one part per view.
   std::string view;
   std::vector<std::string> fileViews;  // the file's views, the default one first
+  // A view of a file of one part per view, but the first: its part's names carry no view, so
+  // its channels (colour and passes) are written with the view in their names (the output is
+  // one multi-view part). Empty otherwise.
+  std::string partView;
 };
 
 // The Blender Cycles multi-layer layout for render layer `layer` ("ViewLayer"): all AOVs in the

@@ -106,7 +106,7 @@ AovLayout layoutForView(const AovLayout& base, const FileViews& views, std::size
     layout.view = view;
     layout.fileViews = views.names;
   } else if (index > 0) {
-    layout.passes = false;  // one part per view: the first view's passes only
+    layout.partView = view;
   }
   return layout;
 }

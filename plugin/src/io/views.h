@@ -42,9 +42,9 @@ std::vector<std::string> passPlanNames(const std::vector<std::string>& channels,
 
 // The layout that reads view `index` of `views` with `base`'s AOVs and conventions: channel
 // names with the view in them (single part; the default view keeps a name without it where the
-// file has no name with it), or the view's part (one part per view). Pass-through channels go
-// with the first view only; passes with each view of a one-part file (its own channels), with
-// the first view of a file of one part per view.
+// file has no name with it), or the view's part (one part per view: a view but the first is
+// written with the view in its names, AovLayout::partView). Pass-through channels go with the
+// first view only; passes with each view (its own channels, or its own part's).
 AovLayout layoutForView(const AovLayout& base, const FileViews& views, std::size_t index);
 
 }  // namespace taa::io

@@ -178,8 +178,18 @@ std::vector<InputFile> frameInputFiles(const io::AovLayout& layout, int frame) {
 
 namespace {
 
-// The output's colour names for one layout (a view's, or the job's).
-std::vector<std::string> outputChannelNamesOf(const SequenceJob& job, const io::AovLayout& layout) {
+// `names` of a view's channels as the output names them: with the view in them for a view of
+// a file of one part per view but the first (io::AovLayout::partView), as they are otherwise.
+std::vector<std::string> outputNamesOfView(std::vector<std::string> names,
+                                           const io::AovLayout& layout) {
+  if (layout.partView.empty()) return names;
+  for (std::string& name : names) name = io::viewChannelName(name, layout.partView);
+  return names;
+}
+
+// The colour's names in the layout's part, alpha included (a view's, or the job's): --out-ch,
+// else the input's.
+std::vector<std::string> colourNamesOf(const SequenceJob& job, const io::AovLayout& layout) {
   if (!job.outputChannels.empty()) return job.outputChannels;
   std::vector<std::string> names = layout.color.channels;
   if (names.size() == 3) {
@@ -189,6 +199,11 @@ std::vector<std::string> outputChannelNamesOf(const SequenceJob& job, const io::
     names.push_back(dot == std::string::npos ? "A" : red.substr(0, dot + 1) + "A");
   }
   return names;
+}
+
+// The output's colour names for one layout (a view's, or the job's).
+std::vector<std::string> outputChannelNamesOf(const SequenceJob& job, const io::AovLayout& layout) {
+  return outputNamesOfView(colourNamesOf(job, layout), layout);
 }
 
 }  // namespace
@@ -318,10 +333,10 @@ struct JobRun {
   static const io::FrameData& view(const io::FrameData& data, std::size_t v) {
     return v == 0 ? data : data.otherViews[v - 1];
   }
-  // The type view `v` is resolved into and written as (its colour names pick it).
+  // The type view `v` is resolved into and written as (its colour's type in its part).
   SampleType outputTypeOf(const io::FrameData& data, std::size_t v) const {
     io::WriteOptions viewWrite = write;
-    viewWrite.rgbaNames = viewNames[v];
+    viewWrite.rgbaNames = colourNamesOf(job, *layouts[v]);
     return io::outputSampleType(viewWrite, view(data, v).colorSpec);
   }
 
@@ -752,6 +767,7 @@ void runWindow(JobRun& run, gl::Context& context) {
     for (std::size_t v = 0; v < resolvers.size(); ++v) {
       io::FrameData& viewData = v == 0 ? data : data.otherViews[v - 1];
       passes.push_back(std::move(viewData.passes));
+      passes.back().names = outputNamesOfView(std::move(passes.back().names), *run.layouts[v]);
       const std::optional<PassPlan>& passPlan = passPlans[v];
       if (!passPlan || passPlan->empty()) continue;
       io::ExtraChannels& viewPasses = passes.back();
