@@ -587,8 +587,6 @@ io::ExtraChannels windowDebugChannels(const Image& debug, const Image& nonFinite
   return extra;
 }
 
-// The window resolve: frames enter a ring as they are read (once each, in order) and leave it
-// when no later window needs them; each output frame is resolved from its window alone.
 // One line a kind for -v, the channels (as the file names them) in file order: a render's
 // every pass is 70 names.
 void describePassKinds(const PassPlan& plan, const std::vector<std::string>& names,
@@ -640,151 +638,195 @@ ResolveOptions windowOptionsOf(const JobRun& run, const std::vector<int>& output
   return options;
 }
 
-void runWindow(JobRun& run, gl::Context& context) {
-  const SequenceJob& job = run.job;
-  std::vector<int> outputs = job.frames;
-  std::sort(outputs.begin(), outputs.end());
-  const ResolveOptions options = windowOptionsOf(run, outputs);
-  const WindowPlan plan = planWindows(outputs, job.availableFrames, job.resetFrames,
-                                      options.window.radius);
-  // One ring per view: each view is resolved as if alone.
-  std::vector<std::unique_ptr<WindowResolver>> resolvers;
-  for (std::size_t v = 0; v < run.layouts.size(); ++v) {
-    resolvers.push_back(std::make_unique<WindowResolver>(context, options));
-    resolvers.back()->setDebugOutput(job.debugLayers);
+// One window-mode run: frames enter the views' rings as they are read (once each, in order)
+// and leave when no later window needs them; each output frame is resolved from its window
+// alone, its passes finished from the sums as the writer packs them.
+class WindowRun {
+ public:
+  WindowRun(JobRun& run, gl::Context& context, std::vector<int> outputs)
+      : run_(run),
+        job_(run.job),
+        outputs_(std::move(outputs)),
+        options_(windowOptionsOf(run, outputs_)),
+        plan_(planWindows(outputs_, job_.availableFrames, job_.resetFrames,
+                          options_.window.radius)),
+        reports_(outputs_.size()),
+        // Whether the frames carry passes is known once the first is read: until then, one
+        // read, unless --threads said how many.
+        reads_(plan_.reads, firstIoDepth(job_), [&run](int frame) { return run.read(frame); }),
+        writes_(firstIoDepth(job_), [this](int index) {
+          if (run_.callbacks.frameDone) run_.callbacks.frameDone(reports_[std::size_t(index)]);
+        }),
+        passPlans_(run.layouts.size()) {
+    // One ring per view: each view is resolved as if alone.
+    for (std::size_t v = 0; v < run.layouts.size(); ++v) {
+      resolvers_.push_back(std::make_unique<WindowResolver>(context, options_));
+      resolvers_.back()->setDebugOutput(job_.debugLayers);
+    }
   }
-  WindowResolver& resolver = *resolvers.front();
-  std::vector<FrameReport> reports(outputs.size());
-  // Whether the frames carry passes is known once the first is read: until then, one read,
-  // unless --threads said how many.
-  const int firstDepth = job.ioThreads == kAutoIoThreads ? 0 : job.ioThreads;
-  ReadAhead reads(plan.reads, firstDepth, [&run](int frame) { return run.read(frame); });
-  WriteBehind writes(firstDepth, [&](int index) {
-    if (run.callbacks.frameDone) run.callbacks.frameDone(reports[std::size_t(index)]);
-  });
-  std::map<int, io::FrameData> waiting;  // read output frames, pixels dropped once uploaded
-  bool toldVectorsOnly = false;
-  // The passes (issue 21): planned from the first frame read, every frame the same channels;
-  // each view its own (a multi-view file's views each resolve their passes with their own
-  // weights).
-  std::vector<std::optional<PassPlan>> passPlans(resolvers.size());
-  std::string passFile;  // the file the plans came from, for the message when one differs
-  std::vector<int> inRing;
-  bool depthSet = false;  // the reads' and writes' depth, once the first frame's passes are known
-  const auto hasPasses = [&passPlans] {
-    return std::any_of(passPlans.begin(), passPlans.end(),
-                       [](const std::optional<PassPlan>& p) { return p && !p->empty(); });
-  };
 
-  for (int index = 0; index < int(outputs.size()); ++index) {
-    run.stopIfAsked(writes, index);
-    const int frame = outputs[std::size_t(index)];
-    const FrameWindow window = plan.windows.at(frame);
-    for (auto it = inRing.begin(); it != inRing.end();) {
-      if (*it < window.first) {
-        for (auto& r : resolvers) r->dropFrame(*it);
-        it = inRing.erase(it);
+  void resolveAll() {
+    for (int index = 0; index < int(outputs_.size()); ++index) {
+      run_.stopIfAsked(writes_, index);
+      const int frame = outputs_[std::size_t(index)];
+      const FrameWindow window = plan_.windows.at(frame);
+      dropFramesBefore(window.first);
+      while (!reads_.done() && reads_.peek() <= window.last) addToRings(reads_.next());
+      resolveAndWrite(index, window);
+    }
+    writes_.finish();
+  }
+
+ private:
+  static int firstIoDepth(const SequenceJob& job) {
+    return job.ioThreads == kAutoIoThreads ? 0 : job.ioThreads;
+  }
+
+  bool hasPasses() const {
+    return std::any_of(passPlans_.begin(), passPlans_.end(),
+                       [](const std::optional<PassPlan>& p) { return p && !p->empty(); });
+  }
+
+  void dropFramesBefore(int first) {
+    for (auto it = inRing_.begin(); it != inRing_.end();) {
+      if (*it < first) {
+        for (auto& r : resolvers_) r->dropFrame(*it);
+        it = inRing_.erase(it);
       } else {
         ++it;
       }
     }
-    while (!reads.done() && reads.peek() <= window.last) {
-      io::FrameData data = reads.next();
-      const int f = data.frame;
-      if (!data.camera && !toldVectorsOnly && run.callbacks.detail) {
-        run.callbacks.detail("window resolve: frame " + std::to_string(f) +
-                          " has no camera matrices (header or sidecar): its samples follow "
-                          "their motion vectors only");
-        toldVectorsOnly = true;
-      }
-      for (std::size_t v = 0; v < resolvers.size(); ++v) {
-        const io::ExtraChannels& passes = JobRun::view(data, v).passes;
-        const std::vector<std::string> names = io::passPlanNames(passes.names, *run.layouts[v]);
-        std::optional<PassPlan>& passPlan = passPlans[v];
-        if (!passPlan) {
-          passPlan = planPasses(names, passes.formats, io::passRulesOf(*run.layouts[v]));
-          passFile = data.colorPath;
-          resolvers[v]->setPasses(passPlan->halfGroups, int(passPlan->cryptomatte.size()));
-          if (run.callbacks.detail) {
-            describePassKinds(*passPlan, passes.names, run.callbacks.detail);
-          }
-        } else if (names != passPlan->names) {
-          throw Error("the frame's pass channels differ from those of " + passFile +
-                          " (every frame of a run must hold the same channels)",
-                      {data.colorPath, f, ""});
+  }
+
+  // The passes (issue 21): planned from the first frame read, every frame the same channels;
+  // each view its own (a multi-view file's views each resolve their passes with their own
+  // weights). The reads' and writes' depth follows from them.
+  void planOrCheckPasses(const io::FrameData& data) {
+    for (std::size_t v = 0; v < resolvers_.size(); ++v) {
+      const io::ExtraChannels& passes = JobRun::view(data, v).passes;
+      const std::vector<std::string> names = io::passPlanNames(passes.names, *run_.layouts[v]);
+      std::optional<PassPlan>& passPlan = passPlans_[v];
+      if (!passPlan) {
+        passPlan = planPasses(names, passes.formats, io::passRulesOf(*run_.layouts[v]));
+        passFile_ = data.colorPath;
+        resolvers_[v]->setPasses(passPlan->halfGroups, int(passPlan->cryptomatte.size()));
+        if (run_.callbacks.detail) {
+          describePassKinds(*passPlan, passes.names, run_.callbacks.detail);
         }
-      }
-      if (!depthSet) {
-        reads.setDepth(ioDepthOf(job, hasPasses()));
-        writes.setDepth(ioDepthOf(job, hasPasses()));
-        depthSet = true;
-      }
-      for (std::size_t v = 0; v < resolvers.size(); ++v) {
-        const io::FrameData& viewData = JobRun::view(data, v);
-        ResolveInput input = run.inputOf(viewData, v == 0);
-        for (const TypedImage& group : viewData.passGroups) input.passGroups.emplace_back(&group);
-        for (const Image& set : viewData.passCryptomatte) input.cryptomatte.emplace_back(&set);
-        try {
-          resolvers[v]->addFrame(f, input);
-        } catch (const Error& e) {
-          throw Error(e.description(), {data.colorPath, f, e.context().channel});
-        }
-      }
-      inRing.push_back(f);
-      if (plan.windows.count(f)) {
-        // Uploaded: only the headers, pass-through and kept pass channels stay.
-        data.passGroups.clear();
-        data.passCryptomatte.clear();
-        data.color = TypedImage();
-        data.depth = Image();
-        data.motion = Image();
-        for (io::FrameData& other : data.otherViews) {
-          other.passGroups.clear();
-          other.passCryptomatte.clear();
-          other.color = TypedImage();
-          other.depth = Image();
-          other.motion = Image();
-        }
-        waiting.emplace(f, std::move(data));
+      } else if (names != passPlan->names) {
+        throw Error("the frame's pass channels differ from those of " + passFile_ +
+                        " (every frame of a run must hold the same channels)",
+                    {data.colorPath, data.frame, ""});
       }
     }
-    io::FrameData data = std::move(waiting.at(frame));
-    waiting.erase(frame);
-    FrameReport& report = reports[std::size_t(index)] = run.reportOf(data, index);
-    report.historyReset = plan.shotStarts.count(frame) > 0;
-    if (run.callbacks.frameRead) run.callbacks.frameRead(report);
+    if (!ioDepthSet_) {
+      reads_.setDepth(ioDepthOf(job_, hasPasses()));
+      writes_.setDepth(ioDepthOf(job_, hasPasses()));
+      ioDepthSet_ = true;
+    }
+  }
+
+  // A frame read into every view's ring; an output frame waits for its turn without the
+  // pixels the rings hold (only its headers, pass-through and kept pass channels stay).
+  void addToRings(io::FrameData data) {
+    const int f = data.frame;
+    if (!data.camera && !toldVectorsOnly_ && run_.callbacks.detail) {
+      run_.callbacks.detail("window resolve: frame " + std::to_string(f) +
+                            " has no camera matrices (header or sidecar): its samples follow "
+                            "their motion vectors only");
+      toldVectorsOnly_ = true;
+    }
+    planOrCheckPasses(data);
+    for (std::size_t v = 0; v < resolvers_.size(); ++v) {
+      const io::FrameData& viewData = JobRun::view(data, v);
+      ResolveInput input = run_.inputOf(viewData, v == 0);
+      for (const TypedImage& group : viewData.passGroups) input.passGroups.emplace_back(&group);
+      for (const Image& set : viewData.passCryptomatte) input.cryptomatte.emplace_back(&set);
+      try {
+        resolvers_[v]->addFrame(f, input);
+      } catch (const Error& e) {
+        throw Error(e.description(), {data.colorPath, f, e.context().channel});
+      }
+    }
+    inRing_.push_back(f);
+    if (!plan_.windows.count(f)) return;
+    auto dropUploaded = [](io::FrameData& view) {
+      view.passGroups.clear();
+      view.passCryptomatte.clear();
+      view.color = TypedImage();
+      view.depth = Image();
+      view.motion = Image();
+    };
+    dropUploaded(data);
+    for (io::FrameData& other : data.otherViews) dropUploaded(other);
+    waiting_.emplace(f, std::move(data));
+  }
+
+  // View `v`'s passes of the frame just resolved, in the file's order and types: finished from
+  // the sums band by band as the writer packs them.
+  io::ExtraChannels finishedPasses(io::FrameData& data, std::size_t v) {
+    io::FrameData& viewData = v == 0 ? data : data.otherViews[v - 1];
+    io::ExtraChannels passes = std::move(viewData.passes);
+    passes.names = outputNamesOfView(std::move(passes.names), *run_.layouts[v]);
+    const std::optional<PassPlan>& passPlan = passPlans_[v];
+    if (!passPlan || passPlan->empty()) return passes;
+    if (passPlan->halfOrFloat) {
+      passes.packed = finishPassesPacked(resolvers_[v]->takePassSums(), std::move(passes.image),
+                                         *passPlan);
+      passes.image = Image();
+    } else {
+      passes.image = finishPasses(resolvers_[v]->takePassSums(), passes.image, *passPlan);
+    }
+    return passes;
+  }
+
+  void resolveAndWrite(int index, const FrameWindow& window) {
+    const int frame = outputs_[std::size_t(index)];
+    io::FrameData data = std::move(waiting_.at(frame));
+    waiting_.erase(frame);
+    FrameReport& report = reports_[std::size_t(index)] = run_.reportOf(data, index);
+    report.historyReset = plan_.shotStarts.count(frame) > 0;
+    if (run_.callbacks.frameRead) run_.callbacks.frameRead(report);
     std::vector<TypedImage> views;
-    for (std::size_t v = 0; v < resolvers.size(); ++v) {
-      views.push_back(run.resolveNaming(JobRun::view(data, v), [&] {
-        return resolvers[v]->resolve(frame, window.first, window.last, run.outputTypeOf(data, v));
+    std::vector<io::ExtraChannels> passes;
+    for (std::size_t v = 0; v < resolvers_.size(); ++v) {
+      views.push_back(run_.resolveNaming(JobRun::view(data, v), [&] {
+        return resolvers_[v]->resolve(frame, window.first, window.last,
+                                      run_.outputTypeOf(data, v));
       }));
+      passes.push_back(finishedPasses(data, v));
     }
     TypedImage output = std::move(views.front());
     views.erase(views.begin());
-    // Each view's passes in the file's order and types, after the colours: finished from the
-    // sums band by band as the writer packs them.
-    std::vector<io::ExtraChannels> passes;
-    for (std::size_t v = 0; v < resolvers.size(); ++v) {
-      io::FrameData& viewData = v == 0 ? data : data.otherViews[v - 1];
-      passes.push_back(std::move(viewData.passes));
-      passes.back().names = outputNamesOfView(std::move(passes.back().names), *run.layouts[v]);
-      const std::optional<PassPlan>& passPlan = passPlans[v];
-      if (!passPlan || passPlan->empty()) continue;
-      io::ExtraChannels& viewPasses = passes.back();
-      if (passPlan->halfOrFloat) {
-        viewPasses.packed = finishPassesPacked(resolvers[v]->takePassSums(),
-                                               std::move(viewPasses.image), *passPlan);
-        viewPasses.image = Image();
-      } else {
-        viewPasses.image = finishPasses(resolvers[v]->takePassSums(), viewPasses.image, *passPlan);
-      }
-    }
     io::ExtraChannels debug;
-    if (job.debugLayers) debug = windowDebugChannels(resolver.lastDebug(), data.nonFiniteMask);
-    writes.push(run.writeOf(data, std::move(output), std::move(debug), views, std::move(passes)),
-                index);
+    if (job_.debugLayers) {
+      debug = windowDebugChannels(resolvers_.front()->lastDebug(), data.nonFiniteMask);
+    }
+    writes_.push(run_.writeOf(data, std::move(output), std::move(debug), views, std::move(passes)),
+                 index);
   }
-  writes.finish();
+
+  JobRun& run_;
+  const SequenceJob& job_;
+  const std::vector<int> outputs_;  // in order
+  const ResolveOptions options_;
+  const WindowPlan plan_;
+  std::vector<FrameReport> reports_;
+  ReadAhead reads_;
+  WriteBehind writes_;
+  std::vector<std::unique_ptr<WindowResolver>> resolvers_;
+  std::vector<std::optional<PassPlan>> passPlans_;
+  std::string passFile_;  // the file the plans came from, for the message when one differs
+  bool ioDepthSet_ = false;
+  std::vector<int> inRing_;
+  std::map<int, io::FrameData> waiting_;  // read output frames, pixels dropped once uploaded
+  bool toldVectorsOnly_ = false;
+};
+
+void runWindow(JobRun& run, gl::Context& context) {
+  std::vector<int> outputs = run.job.frames;
+  std::sort(outputs.begin(), outputs.end());
+  WindowRun(run, context, std::move(outputs)).resolveAll();
 }
 
 }  // namespace
