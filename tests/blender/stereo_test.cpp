@@ -82,6 +82,33 @@ std::string frameName(int frame) {
   return name;
 }
 
+// One view of a one-part multi-view frame as a file of that view alone would hold it: its
+// channels with the view taken out of their names, in their types, no multiView attribute.
+Exr viewAlone(const Exr& input, const std::string& view) {
+  const std::string tag = "." + view + ".";
+  Exr alone;
+  alone.spec = input.spec;
+  alone.spec.erase_attribute("multiView");
+  alone.spec.channelnames.clear();
+  alone.spec.channelformats.clear();
+  std::vector<int> picked;
+  for (int c = 0; c < input.spec.nchannels; ++c) {
+    std::string name = input.spec.channelnames[std::size_t(c)];
+    const std::size_t at = name.find(tag);
+    if (at == std::string::npos) continue;
+    picked.push_back(c);
+    alone.spec.channelnames.push_back(name.erase(at, view.size() + 1));
+    alone.spec.channelformats.push_back(input.spec.channelformat(c));
+  }
+  alone.spec.nchannels = int(picked.size());
+  for (std::size_t p = 0; p < input.spec.image_pixels(); ++p) {
+    for (int c : picked) {
+      alone.pixels.push_back(input.pixels[p * std::size_t(input.spec.nchannels) + std::size_t(c)]);
+    }
+  }
+  return alone;
+}
+
 class StereoTest : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(StereoTest, BothViewsInOneRunEachAsIfAlone) {
@@ -163,32 +190,12 @@ TEST(StereoPasses, EachViewResolvesItsOwnPassesAsAFileOfItAlone) {
   for (const std::string view : {"left", "right"}) {
     const std::string tag = "." + view + ".";
     for (int frame = 1; frame <= kFrames; ++frame) {
-      const Exr input = readExr(render / ("render_" + frameName(frame).substr(2)));
-      OIIO::ImageSpec spec = input.spec;
-      spec.erase_attribute("multiView");
-      spec.channelnames.clear();
-      spec.channelformats.clear();
-      std::vector<int> picked;
-      for (int c = 0; c < input.spec.nchannels; ++c) {
-        std::string name = input.spec.channelnames[std::size_t(c)];
-        const std::size_t at = name.find(tag);
-        if (at == std::string::npos) continue;
-        picked.push_back(c);
-        spec.channelnames.push_back(name.erase(at, view.size() + 1));
-        spec.channelformats.push_back(input.spec.channelformat(c));
-      }
-      spec.nchannels = int(picked.size());
-      std::vector<float> pixels;
-      for (std::size_t p = 0; p < input.spec.image_pixels(); ++p) {
-        for (int c : picked) {
-          pixels.push_back(input.pixels[p * std::size_t(input.spec.nchannels) + std::size_t(c)]);
-        }
-      }
+      const Exr alone = viewAlone(readExr(render / ("render_" + frameName(frame).substr(2))), view);
       const fs::path path = dir / ("in_" + view) / frameName(frame);
       fs::create_directories(path.parent_path());
       auto out = OIIO::ImageOutput::create(path.string());
-      ASSERT_TRUE(out && out->open(path.string(), spec));
-      ASSERT_TRUE(out->write_image(OIIO::TypeFloat, pixels.data()));
+      ASSERT_TRUE(out && out->open(path.string(), alone.spec));
+      ASSERT_TRUE(out->write_image(OIIO::TypeFloat, alone.pixels.data()));
       ASSERT_TRUE(out->close());
     }
     run(dir / ("in_" + view) / "r_####.exr", "alone_" + view);
@@ -225,31 +232,11 @@ TEST(StereoParts, AFileOfOnePartPerViewResolvesEveryViewWithItsPasses) {
     std::vector<OIIO::ImageSpec> specs;
     std::vector<std::vector<float>> parts;
     for (const std::string& view : views) {
-      const std::string tag = "." + view + ".";
-      OIIO::ImageSpec spec = input.spec;
-      spec.erase_attribute("multiView");
-      spec.attribute("view", view);
-      spec.attribute("name", "ViewLayer." + view);
-      spec.channelnames.clear();
-      spec.channelformats.clear();
-      std::vector<int> picked;
-      for (int c = 0; c < input.spec.nchannels; ++c) {
-        std::string name = input.spec.channelnames[std::size_t(c)];
-        const std::size_t at = name.find(tag);
-        if (at == std::string::npos) continue;
-        picked.push_back(c);
-        spec.channelnames.push_back(name.erase(at, view.size() + 1));
-        spec.channelformats.push_back(input.spec.channelformat(c));
-      }
-      spec.nchannels = int(picked.size());
-      std::vector<float> pixels;
-      for (std::size_t p = 0; p < input.spec.image_pixels(); ++p) {
-        for (int c : picked) {
-          pixels.push_back(input.pixels[p * std::size_t(input.spec.nchannels) + std::size_t(c)]);
-        }
-      }
-      specs.push_back(spec);
-      parts.push_back(std::move(pixels));
+      Exr alone = viewAlone(input, view);
+      alone.spec.attribute("view", view);
+      alone.spec.attribute("name", "ViewLayer." + view);
+      specs.push_back(alone.spec);
+      parts.push_back(std::move(alone.pixels));
     }
     const fs::path path = dir / "parts" / frameName(frame);
     fs::create_directories(path.parent_path());
