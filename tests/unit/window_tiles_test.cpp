@@ -57,9 +57,21 @@ TEST(WindowTiles, ASideEndsBeforeItsFirstFrameWhoseShadingShifted) {
   EXPECT_EQ(ahead.frames, (std::vector<float>{3, 3, 3, 2}));
 }
 
-TEST(WindowTiles, NearFramesCountWhateverTheyShow) {
+TEST(WindowTiles, TheNearestFramesCountWhateverTheyShow) {
   const TileReach reach = decideTileReach(codes(0, 1, 0.1), 16, 8, kPerTile, kOffsets, 1);
   EXPECT_EQ(reach.frames, (std::vector<float>{3, 3, 3, 3}));
+}
+
+TEST(WindowTiles, FramesWithinNearButTheNearestEndTheWindowWhereAFifthRejectedThem) {
+  // near 2: t-2 counts with 12 of 64 pixels rejecting it (19%) whatever its mean, and ends the
+  // window behind at t-1 with 14 (22%; a light moving every frame); t-1 always counts.
+  const TileReach some = decideTileReach(codes(0, 2, 0.1, 64, 12), 16, 8, kPerTile, kOffsets, 2);
+  EXPECT_EQ(some.frames, (std::vector<float>{3, 3, 3, 3}));
+  const TileReach more = decideTileReach(codes(0, 2, 0.0, 64, 14), 16, 8, kPerTile, kOffsets, 2);
+  EXPECT_EQ(more.frames, (std::vector<float>{1, 3, 3, 3}));
+  const TileReach nearest =
+      decideTileReach(codes(0, 0, 0.0, 64, 64), 16, 8, kPerTile, kOffsets, 2);
+  EXPECT_EQ(nearest.frames, (std::vector<float>{3, 3, 3, 3}));
 }
 
 TEST(WindowTiles, AFrameThatReachedFewPixelsDoesNotEndTheWindow) {

@@ -159,9 +159,10 @@ std::vector<Entry> makeEntries() {
        "resolved frame at most (2K+1 kept in memory); stops at the shot's ends"},
       &WindowOptions::radius));
   entries.push_back(windowFramesOption(
-      {"window-near", "Mode", "0..16", "", "window mode: frames each side always used; each "
-       "32 px tile's window reaches farther (up to --window) while those frames agree with t "
-       "over the tile (0: the whole window everywhere)"},
+      {"window-near", "Mode", "0..16", "", "window mode: frames each side used unless a fifth "
+       "of a 32 px tile rejects them (the nearest always); each tile's window reaches farther "
+       "(up to --window) while those frames agree with t over the tile (0: the whole window "
+       "everywhere)"},
       &WindowOptions::nearRadius));
   entries.push_back(windowFramesOption(
       {"window-moving", "Mode", "0..16", "", "window mode: frames each side whose moving "

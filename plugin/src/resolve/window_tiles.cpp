@@ -16,6 +16,9 @@ namespace {
 constexpr double kDisagreeingShare = 0.05;
 constexpr double kStandardErrors = 3.0;
 constexpr double kTolerance = 0.002;
+// A frame within `near` but the nearest ends the window only where more than this share of the
+// pixels rejected it: a light that moves every frame (docs/TUNING.md, "The near frames").
+constexpr double kNearDisagreeingShare = 0.2;
 // A frame that reached fewer than this share of a tile's pixels says too little to end it.
 constexpr double kTooFew = 0.25;
 
@@ -32,7 +35,9 @@ TileReach decideTileReach(const std::vector<std::uint8_t>& codes, int statsWidth
   TileReach reach;
   reach.columns = (statsWidth + perTile - 1) / perTile;
   reach.rows = (statsHeight + perTile - 1) / perTile;
-  reach.frames.assign(std::size_t(2) * reach.columns * reach.rows, float(near));
+  // The nearest frame each side always counts.
+  const int always = std::min(near, 1);
+  reach.frames.assign(std::size_t(2) * reach.columns * reach.rows, float(always));
   const std::size_t count = offsets.size();
   std::vector<Moments> moments(count);
   for (int row = 0; row < reach.rows; ++row) {
@@ -61,11 +66,13 @@ TileReach decideTileReach(const std::vector<std::uint8_t>& codes, int statsWidth
       for (std::size_t k = 0; k < count; ++k) {
         const int offset = offsets[k];
         const int distance = std::abs(offset);
-        if (distance <= near) continue;
+        if (distance <= always) continue;
         const int side = offset < 0 ? 0 : 1;
         const Moments& m = moments[k];
         bool agrees = m.count < kTooFew * pixels;
-        if (!agrees) {
+        if (!agrees && distance <= near) {
+          agrees = m.disagreeing <= kNearDisagreeingShare * m.count;
+        } else if (!agrees) {
           const double mean = m.sum / m.count;
           const double variance = std::max(m.squares / m.count - mean * mean, 0.0);
           const double standardError = std::sqrt(variance / m.count);

@@ -1,5 +1,7 @@
-// The window's tile test (--window-near, issue 23): the frames within `near` of t always count;
-// each side of a tile's window reaches on, frame by frame, while the farther frame's samples
+// The window's tile test (--window-near, issue 23): the nearest frame each side always counts,
+// the others within `near` unless a fifth of the tile's pixels rejected them (a light moving
+// every frame); each side of a tile's window reaches on, frame by frame, while the farther
+// frame's samples
 // agree with t's own over the tile: the mean of their differences (one per sampled pixel) is
 // within its standard error of zero (plus a small tolerance). Where the shading holds still (a
 // static shot, a dolly) a tile gets the long window; where it changes (a shadow sweeping, a
