@@ -48,13 +48,13 @@ run() {
   local count; count=$(ls "$work/out-$name" | wc -l)
   echo "$name: $count frames in ${seconds} s ($(/usr/bin/python3 -c "print(round($count/$seconds,2))") frames/s), peak RSS $(( $(cat "$work/rss-$name") / 1024 )) MiB"
 }
-steady() {
-  local name="$1"; shift
-  local linked="$work/steady-input" short long
+# The cached frames linked forward and back into 64 frames (0..n-1, n-2..1, 0.. as indices).
+link_steady() {
+  linked="$work/steady-input"
   rm -rf "$linked" && mkdir -p "$linked"
   local cached=("$work"/input.*.exr) order=() frame=1
   local count=${#cached[@]}
-  while [ ${#order[@]} -lt 64 ]; do  # 0..n-1, n-2..1, 0.. (indices into the cache)
+  while [ ${#order[@]} -lt 64 ]; do
     for ((i = 0; i < count; ++i)); do order+=("$i"); done
     for ((i = count - 2; i > 0; --i)); do order+=("$i"); done
   done
@@ -62,6 +62,10 @@ steady() {
     ln -s "${cached[$index]}" "$linked/input.$(printf %04d $frame).exr"
     frame=$((frame + 1))
   done
+}
+steady() {
+  local name="$1"; shift
+  local short long rss
   for range in 17-24 17-32; do
     rm -rf "$work/out-$name"
     /usr/bin/time -f "%e %M" -o "$work/time-$name-$range" "$taatool" --preset cycles \
@@ -74,6 +78,7 @@ steady() {
       "peak RSS $((rss / 1024)) MiB"
 }
 if [ "${STEADY:-0}" = 1 ]; then
+  link_steady
   steady colour-alone --aov '*=drop'
   steady every-pass
   exit 0

@@ -1,12 +1,12 @@
 // The window's tile test (--window-near, issue 23): the nearest frame each side always counts,
 // the others within `near` unless a fifth of the tile's pixels rejected them (a light moving
 // every frame); each side of a tile's window reaches on, frame by frame, while the farther
-// frame's samples
-// agree with t's own over the tile: the mean of their differences (one per sampled pixel) is
-// within its standard error of zero (plus a small tolerance). Where the shading holds still (a
-// static shot, a dolly) a tile gets the long window; where it changes (a shadow sweeping, a
-// light turning) the near one. Pooled over a tile, a shift too small for one pixel's noisy
-// test shows (the per-pixel colour test and --window-adaptive decide per pixel).
+// frame's samples agree with t's own over the tile: few of its pixels' colour tests rejected
+// them, and the mean of their differences (one per sampled pixel) is within its standard error
+// of zero (plus a small tolerance). Where the shading holds still (a static shot, a dolly) a
+// tile gets the long window; where it changes (a shadow sweeping, a light turning) the near
+// one. Pooled over a tile, a shift too small for one pixel's noisy test shows (the per-pixel
+// colour test and --window-adaptive decide per pixel).
 #pragma once
 
 #include <cstdint>
