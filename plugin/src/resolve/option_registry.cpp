@@ -204,6 +204,11 @@ std::vector<Entry> makeEntries() {
        "inside a moving object at the resolved frame (a box on the floor stays opaque)"},
       &WindowOptions::opaqueMoving));
   entries.push_back(windowSwitchOption(
+      {"window-strata", "Mode", "", "", "window mode: average the means of the four quadrants "
+       "around the pixel centre, not every sample alike (samples land at random; the beauty "
+       "alone: with passes every channel takes the plain mean)"},
+      &WindowOptions::strata));
+  entries.push_back(windowSwitchOption(
       {"window-adaptive", "Mode", "", "", "window mode: end each side of a pixel's window at "
        "the first frame whose samples disagree with the nearer frames'"},
       &WindowOptions::adaptive));

@@ -678,6 +678,7 @@ struct WindowResolver::Impl {
       p.set("uDepthTolerance", options.depthTolerance);
       p.set("uReconstructionWeight", options.window.reconstructionWeight);
       p.set("uOpaqueMoving", options.window.opaqueMoving ? 1 : 0);
+      p.set("uStrata", options.window.strata ? 1 : 0);
       p.set("uAdaptive", options.window.adaptive ? 1 : 0);
       p.set("uTiles", tiles ? 1 : 0);
       p.set("uTileSize", kTileSize);
