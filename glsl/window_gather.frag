@@ -44,8 +44,9 @@
 #ifndef TILE_STATS
 #define TILE_STATS 0  // 1: the tile test's input, per sampled pixel and source (uStatsStride)
 #endif
-// The quadrants' sums (--window-strata) in the beauty-only gather: with passes or Cryptomatte
-// the plain sums serve the colour too, so that the passes still add up to it.
+// The quadrants' sums (--window-strata) in the beauty's own gather. A run with pass groups
+// takes its colour from the pass draws, whose plain sums it shares with the passes so that they
+// still add up to it; Cryptomatte's draws weigh IDs by the plain sample weights.
 #define STRATA (PASS_GROUPS == 0 && CRYPTOMATTE == 0 && TILE_STATS == 0)
 #ifndef CHAINS
 #define CHAINS 1  // 0: no frame of the window has moving samples; the chains' code is left out

@@ -96,8 +96,8 @@ struct WindowOptions {
   // Sum the samples apart in the four quadrants around the pixel centre and average the
   // quadrants' means: carried samples land at random, and a plain mean weighs each side of an
   // edge by how many samples happened to land there (+0.15 dB on the real-render yardstick, no
-  // scene lower: docs/TUNING.md, "Strata"). The beauty-only resolve: with passes the plain
-  // mean serves the beauty too, so that the passes still add up to it.
+  // real scene lower; the analytic hdr_highlights -0.37: docs/TUNING.md, "Strata"). With
+  // passes the plain mean serves the beauty too, so that the passes still add up to it.
   bool strata = true;
   // Each side of a pixel's window ends at the first source frame whose samples disagree with
   // what the nearer frames gave (the colour test): a long window where the shot holds still,
