@@ -304,14 +304,16 @@ void addStaticSample(ivec2 corner, ivec2 step, bool skip, ivec2 taken, float fra
   vec3 a = along + s.x * gToTargetAlong[0] + s.y * gToTargetAlong[1];
   bool far = isinf(depth);
   vec3 h = far ? a : depth * a + offset + s.x * gToTargetOffset[0] + s.y * gToTargetOffset[1];
-  float weight = spatialWeight(h.xy * (1.0 / h.z) - gPosition, uSigma);
+  vec2 carriedTo = h.xy * (1.0 / h.z);  // where the sample lands in t
+  vec2 landed = carriedTo - gPosition;
+  float weight = spatialWeight(landed, uSigma);
   bool candidate = wanted && weight >= 1e-3;
   float carriedDepth = far ? depth
                            : depth * (depthAlong + dot(s, gToTargetDepthAlong.xy)) +
                                  depthOffset + dot(s, gToTargetDepthOffset.xy);
   // t's own sample nearest where this one lands: a moving one there (and not behind it)
   // means the static sample is inside the moving object's footprint at t.
-  ivec2 q = clamp(ivec2(floor(h.xy * (1.0 / h.z) - uTargetJitter)) - gPixel + 1, ivec2(0),
+  ivec2 q = clamp(ivec2(floor(carriedTo - uTargetJitter)) - gPixel + 1, ivec2(0),
                   ivec2(2));
   float there = ownDepthAt(q);
   bool insideMoving =
@@ -328,7 +330,6 @@ void addStaticSample(ivec2 corner, ivec2 step, bool skip, ivec2 taken, float fra
   gSum += thinWeight * entry.colour;
   gWeight += thinWeight;
   addSourceSample(entry.colour, thin ? 0.0 : kept);
-  vec2 landed = h.xy * (1.0 / h.z) - gPosition;
   ADD_TO_QUADRANTS(gQuadrants, entry.colour, thinWeight, landed)
   ADD_TO_QUADRANTS(gSourceQuadrants, entry.colour, thin ? 0.0 : kept, landed)
   ivec2 texel = clamp(n, ivec2(0), gSize - 1);
