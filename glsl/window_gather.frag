@@ -133,21 +133,37 @@ uniform int uTargetPassLayer;
 uniform int uSourcePassLayer[MAX_SOURCES];
 int gSourcePassLayer;
 #endif
+// The quadrant around the pixel centre a sample `offset` from it falls in, as a one-hot vector
+// (x < 0 and y < 0, x >= 0 and y < 0, x < 0 and y >= 0, both >= 0): selects, not branches.
+vec4 quadrantOf(vec2 offset) {
+  float right = offset.x >= 0.0 ? 1.0 : 0.0;
+  float up = offset.y >= 0.0 ? 1.0 : 0.0;
+  return vec4((1.0 - right) * (1.0 - up), right * (1.0 - up), (1.0 - right) * up, right * up);
+}
 #if CRYPTOMATTE
 #include "window_cryptomatte.glsl"
 layout(location = 2) out vec4 outCrypto[3];  // rank layers 0..2: id, coverage, id, coverage
-#define ADD_CRYPTO(texel, layer, weight, toSource) cryptoAddSample(texel, layer, weight, toSource);
+// What each quadrant's samples count for in the beauty's stratified mean (outStrataShares, the
+// beauty's draw); without it (a run whose colour comes from the pass draws) every sample
+// counts by its weight alone, as in the plain mean.
+uniform bool uHasStrataShares;
+uniform sampler2D uStrataShares;
+vec4 gStrataShares;
+#define CRYPTO_WEIGHT(weight, offset) ((weight) * dot(gStrataShares, quadrantOf(offset)))
+#define ADD_CRYPTO(texel, layer, weight, toSource, offset) \
+  cryptoAddSample(texel, layer, CRYPTO_WEIGHT(weight, offset), toSource);
 // A sample into the pixel's slots with `weight` and the source's with `sourceWeight`, fetched
 // once.
-#define ADD_CRYPTO_TWICE(texel, layer, weight, sourceWeight)                    \
+#define ADD_CRYPTO_TWICE(texel, layer, weight, sourceWeight, offset)            \
   {                                                                             \
     vec4 cryptoRanks = texelFetch(uCrypto, ivec3((texel), (layer)), 0);         \
-    cryptoAddRanks(cryptoRanks, (weight), false);                               \
-    cryptoAddRanks(cryptoRanks, (sourceWeight), true);                          \
+    float cryptoShare = dot(gStrataShares, quadrantOf(offset));                 \
+    cryptoAddRanks(cryptoRanks, (weight) * cryptoShare, false);                 \
+    cryptoAddRanks(cryptoRanks, (sourceWeight) * cryptoShare, true);            \
   }
 #else
-#define ADD_CRYPTO(texel, layer, weight, toSource)
-#define ADD_CRYPTO_TWICE(texel, layer, weight, sourceWeight)
+#define ADD_CRYPTO(texel, layer, weight, toSource, offset)
+#define ADD_CRYPTO_TWICE(texel, layer, weight, sourceWeight, offset)
 #endif
 #if PASS_GROUPS > 0
 uniform sampler2DArray uPasses[PASS_GROUPS];
@@ -187,10 +203,7 @@ Quadrants gQuadrants, gSourceQuadrants;
 const Quadrants kNoQuadrants = Quadrants(vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0));
 // A sample `offset` from the pixel centre into its quadrant's sums, with selects.
 void addToQuadrants(inout Quadrants q, vec4 colour, float weight, vec2 offset) {
-  float right = offset.x >= 0.0 ? 1.0 : 0.0;
-  float up = offset.y >= 0.0 ? 1.0 : 0.0;
-  vec4 share = weight * vec4((1.0 - right) * (1.0 - up), right * (1.0 - up), (1.0 - right) * up,
-                             right * up);
+  vec4 share = weight * quadrantOf(offset);
   q.sum0 += share.x * colour;
   q.sum1 += share.y * colour;
   q.sum2 += share.z * colour;
@@ -213,6 +226,15 @@ vec4 stratifiedMean(Quadrants q, vec4 plainMean) {
   return share.x * (q.sum0 + prior) + share.y * (q.sum1 + prior) + share.z * (q.sum2 + prior) +
          share.w * (q.sum3 + prior);
 }
+// The stratified mean is linear in the samples: a sample of weight w in quadrant i counts
+// w x (share_i + prior x sum(share) / plainWeight), share = 0.25 / (quadrant weight + prior).
+// Those four factors, written beside the colour, let a Cryptomatte draw weigh its IDs as the
+// beauty weighs their samples (with strata off, 1 / plainWeight each: the plain mean's).
+vec4 strataShares(Quadrants q, float plainWeight) {
+  vec4 share = 0.25 / (q.weights + kQuadrantPrior);
+  return share + kQuadrantPrior * dot(share, vec4(1.0)) / plainWeight;
+}
+layout(location = 2) out vec4 outStrataShares;
 #define ADD_TO_QUADRANTS(q, colour, weight, offset) addToQuadrants(q, colour, weight, offset);
 #else
 #define ADD_TO_QUADRANTS(q, colour, weight, offset)
@@ -335,7 +357,7 @@ void addStaticSample(ivec2 corner, ivec2 step, bool skip, ivec2 taken, float fra
   ivec2 texel = clamp(n, ivec2(0), gSize - 1);
   ADD_PASSES_TWICE(gPassSum, thinWeight, gSourcePassSum, thin ? 0.0 : kept, texel,
                    gSourcePassLayer)
-  ADD_CRYPTO_TWICE(texel, gSourcePassLayer, thinWeight, thin ? 0.0 : kept)
+  ADD_CRYPTO_TWICE(texel, gSourcePassLayer, thinWeight, thin ? 0.0 : kept, landed)
 }
 
 // The static samples of the current source in the 2x2 block at `corner` (with `skip`, those
@@ -373,7 +395,8 @@ void addMovingSample(ivec2 corner, ivec2 step, vec2 chained, bool alive) {
                    vec2(n) + 0.5 + gSourceJitter - chained)
   ADD_PASSES(gSourcePassSum, clamp(n, ivec2(0), gSize - 1), gSourcePassLayer,
              candidate ? weight : 0.0)
-  ADD_CRYPTO(clamp(n, ivec2(0), gSize - 1), gSourcePassLayer, candidate ? weight : 0.0, true)
+  ADD_CRYPTO(clamp(n, ivec2(0), gSize - 1), gSourcePassLayer, candidate ? weight : 0.0, true,
+             vec2(n) + 0.5 + gSourceJitter - chained)
 }
 
 // The moving samples of the current source in the 2x2 block around the chained point, if the
@@ -416,6 +439,7 @@ void main() {
   vec3 rgbMin = vec3(1e30), rgbMax = vec3(-1e30);
 #if CRYPTOMATTE
   cryptoBegin();
+  gStrataShares = uHasStrataShares ? texelFetch(uStrataShares, pixel, 0) : vec4(1.0);
 #endif
 #if PASS_GROUPS > 0
   vec4 filteredPasses[PASS_GROUPS];
@@ -455,7 +479,7 @@ void main() {
       float y = decisionLuma(colour);
       ADD_PASSES_TWICE(gPassSum, w, filteredPasses, uReconstruction[3 * (dy + 1) + dx + 1], n,
                        uTargetPassLayer)
-      ADD_CRYPTO(n, uTargetPassLayer, w, false)
+      ADD_CRYPTO(n, uTargetPassLayer, w, false, vec2(n) + 0.5 + uTargetJitter - gPosition)
       ownWeight += w;
       ownSum += w * colour;
       ADD_TO_QUADRANTS(gQuadrants, colour, w, vec2(n) + 0.5 + uTargetJitter - gPosition)
@@ -668,6 +692,7 @@ void main() {
   vec4 resolved = gSum / gWeight;
 #if STRATA
   resolved = uStrata ? stratifiedMean(gQuadrants, resolved) : resolved;
+  outStrataShares = uStrata ? strataShares(gQuadrants, gWeight) : vec4(1.0 / gWeight);
 #endif
   vec4 working = withinWorkingRange(resolved, rgbMin, rgbMax);
 #if LINEAR_SUM

@@ -225,6 +225,69 @@ TEST_F(PassesTest, CryptomatteCoverageIsTheWeightedShareOfTheSamples) {
               softOut);
 }
 
+// Cryptomatte beside the colour alone (no other pass): the beauty is the stratified mean of
+// its own draw (--window-strata), as without the mattes, and the mattes weigh each sample as
+// that mean does. The colour is made the red object's matte itself (1 on it, 0 off it), so the
+// resolved colour and the matte pulled from the resolved Cryptomatte must agree pixel for
+// pixel. (Before, the Cryptomatte draw wrote the plain mean over the beauty: the mattes agreed
+// with a colour that had silently lost its strata.)
+TEST_F(PassesTest, CryptomatteAloneKeepsTheStratifiedBeautyAndFollowsIt) {
+  const fs::path only = dir_ / "cryptomatte-only";
+  fs::create_directories(only);
+  for (int f = 1; f <= kFrames; ++f) {
+    const Exr in = readExr(in_ / frameName("beauty", f));
+    std::vector<std::string> names = {"R", "G", "B", "A"};
+    for (const char* layer : {"CryptoObject00.", "CryptoObject01."}) {
+      for (const char* c : {"r", "g", "b", "a"}) names.push_back(layer + std::string(c));
+    }
+    OIIO::ImageSpec spec(kWidth, kHeight, int(names.size()), OIIO::TypeHalf);
+    spec.channelnames = names;
+    spec.alpha_channel = 3;
+    spec.channelformats.assign(4, OIIO::TypeHalf);
+    spec.channelformats.resize(names.size(), OIIO::TypeFloat);
+    spec.attribute("cryptomatte/f834d0a/name", "CryptoObject");
+    std::vector<float> pixels;
+    for (std::size_t p = 0; p < in.spec.image_pixels(); ++p) {
+      const float red = in.at(p, "CryptoObject00.r") == kIdRed ? 1.0f : 0.0f;
+      for (float v : {red, red, red, 1.0f}) pixels.push_back(v);
+      for (const char* c : {"r", "g", "b", "a"}) {
+        pixels.push_back(in.at(p, "CryptoObject00." + std::string(c)));
+      }
+      for (int c = 0; c < 4; ++c) pixels.push_back(0.0f);
+    }
+    const fs::path path = only / frameName("beauty", f);
+    auto out = OIIO::ImageOutput::create(path.string());
+    ASSERT_TRUE(out && out->open(path.string(), spec));
+    ASSERT_TRUE(out->write_image(OIIO::TypeFloat, pixels.data()));
+    ASSERT_TRUE(out->close());
+    for (const char* aov : {"depth", "motion"}) {
+      fs::copy_file(in_ / frameName(aov, f), only / frameName(aov, f));
+    }
+  }
+  auto resolve = [&](const std::string& out, std::vector<std::string> extra) {
+    std::vector<std::string> args = test::separateFileArgs(only, dir_ / out / "r.####.exr");
+    args.insert(args.end(), {"--window-reconstruction-weight", "0"});
+    args.insert(args.end(), extra.begin(), extra.end());
+    const ToolRun r = test::runTaatool(args, dir_);
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    return readExr(dir_ / out / frameName("r", 3));
+  };
+  const Exr withMattes = resolve("with-mattes", {});
+  const Exr colourAlone = resolve("colour-alone", {"--aov", "*=drop"});
+  const Exr plain = resolve("plain", {"--window-strata", "off"});
+  std::size_t stratified = 0;
+  for (std::size_t p = 0; p < withMattes.spec.image_pixels(); ++p) {
+    ASSERT_EQ(withMattes.at(p, "R"), colourAlone.at(p, "R")) << "pixel " << p;
+    // Half output: within its rounding of values up to 1.
+    ASSERT_NEAR(matteOf(withMattes, p, kIdRed), withMattes.at(p, "R"), 1e-3f) << "pixel " << p;
+    stratified += std::abs(withMattes.at(p, "R") - plain.at(p, "R")) > 2e-3f;
+  }
+  // The strata were in effect: the edges' pixels differ from the plain mean's.
+  EXPECT_GT(stratified, 20u);
+  std::printf("Cryptomatte alone: %zu pixels of the stratified colour differ from the plain\n",
+              stratified);
+}
+
 // A float data pass keeps values a half colour output cannot hold: the colour's 65504 limit is
 // the colour's alone (the pass was once clamped to it).
 TEST_F(PassesTest, FloatPassesKeepValuesBeyondHalfsRange) {

@@ -50,13 +50,20 @@ class OfxHostPassesTest : public OfxHostTest {
       crypto_.frames[f] = crypto;
       writePassFile(f);
     }
+    // Every pass, and (into out-cryptomatte) Cryptomatte alone: an effect resolves one pass
+    // beside the Source, and Cryptomatte without light passes follows the stratified colour.
     const fs::path in = dir_ / "passes";
-    const std::string command =
-        "env -u OCIO '" + std::string(TAA_TAATOOL_PATH) + "' '" +
-        (in / "beauty.####.exr").string() + "' --depth '" + (dir_ / "depth.####.exr").string() + "' --motion '" +
-        (dir_ / "motion.####.exr").string() + "' -d float --mode window --window 2 -o '" +
-        (in / "out" / "out.####.exr").string() + "' -q";
-    ASSERT_EQ(std::system(command.c_str()), 0) << command;
+    for (const auto& [out, rules] :
+         std::vector<std::pair<std::string, std::string>>{
+             {"out", ""}, {"out-cryptomatte", " --aov 'Crypto*=cryptomatte' --aov '*=drop'"}}) {
+      const std::string command =
+          "env -u OCIO '" + std::string(TAA_TAATOOL_PATH) + "' '" +
+          (in / "beauty.####.exr").string() + "' --depth '" + (dir_ / "depth.####.exr").string() +
+          "' --motion '" + (dir_ / "motion.####.exr").string() +
+          "' -d float --mode window --window 2 -o '" + (in / out / "out.####.exr").string() +
+          "' -q" + rules;
+      ASSERT_EQ(std::system(command.c_str()), 0) << command;
+    }
   }
 
   // The fixture's beauty file (its header kept) with the passes as channels named as Cycles
@@ -97,10 +104,11 @@ class OfxHostPassesTest : public OfxHostTest {
   }
 
   // taatool's resolved channels of frame f (rows top first), as RGBA with `alpha` where the
-  // pass has fewer than four channels (one channel: in all four).
-  static Image taatoolPass(int f, const std::vector<std::string>& names, float alpha = 1.0f) {
+  // pass has fewer than four channels (one channel: in all four), from the taatool `run`.
+  static Image taatoolPass(int f, const std::vector<std::string>& names, float alpha = 1.0f,
+                           const std::string& run = "out") {
     const std::string path =
-        (dir_ / "passes" / "out" / ("out." + frameName(f) + ".exr")).string();
+        (dir_ / "passes" / run / ("out." + frameName(f) + ".exr")).string();
     auto in = OIIO::ImageInput::open(path);
     EXPECT_TRUE(in) << path;
     if (!in) return {};
@@ -175,7 +183,8 @@ TEST_F(OfxHostPassesTest, FactorNearestAndCryptomatteAreTaatoolsResolve) {
   auto crypto = instance(false, kLast, {{"Pass", &crypto_}});
   setPassKind(*crypto, 5);
   const Image ranks = taatoolPass(4, {"CryptoObject00.r", "CryptoObject00.g",
-                                      "CryptoObject00.b", "CryptoObject00.a"});
+                                      "CryptoObject00.b", "CryptoObject00.a"},
+                                  1.0f, "out-cryptomatte");
   EXPECT_EQ(maxDifference(render(*crypto, 4), ranks), 0.0f);
   // Coverage is shared between the two IDs somewhere (the object's edge): a real re-weighing.
   bool shared = false;
@@ -184,6 +193,20 @@ TEST_F(OfxHostPassesTest, FactorNearestAndCryptomatteAreTaatoolsResolve) {
   }
   EXPECT_TRUE(shared);
   destroy(crypto);
+}
+
+// Light passes take the plain mean (their sums add up to the colour beside them); the Source's
+// own effect, stratified by default, gives that colour with Window Strata off: the beauty of
+// taatool's run with every pass, bit for bit.
+TEST_F(OfxHostPassesTest, WindowStrataOffGivesTheBeautyThePassesAddUpTo) {
+  auto source = instance(false, kLast, {});
+  setPassKind(*source, 0);  // mode and window as the pass effects'; no Pass clip
+  const Image beauty = taatoolPass(4, {"R", "G", "B", "A"});
+  EXPECT_GT(maxDifference(render(*source, 4), beauty), 1e-4f);
+  source->params.at("windowStrata").intValue = 0;
+  EXPECT_EQ(host_.parameterChanged(*source, "windowStrata"), kOfxStatOK);
+  EXPECT_EQ(maxDifference(render(*source, 4), beauty), 0.0f);
+  destroy(source);
 }
 
 TEST_F(OfxHostPassesTest, ThePassClipIsFetchedForTheWindowAndRefusedInHistoryMode) {

@@ -56,6 +56,9 @@ TEST_F(OfxHostWindowTest, ParametersHaveTheLibrarysDefaults) {
                    double(defaults.falloff));
   ASSERT_TRUE(params.count("windowTaper"));
   EXPECT_EQ(params.at("windowTaper").props.getInt(kOfxParamPropDefault), defaults.taper ? 1 : 0);
+  ASSERT_TRUE(params.count("windowStrata"));
+  EXPECT_EQ(params.at("windowStrata").props.getInt(kOfxParamPropDefault),
+            defaults.strata ? 1 : 0);
   EXPECT_DOUBLE_EQ(params.at("windowColourTolerance").props.getDouble(kOfxParamPropDefault),
                    double(defaults.colourTolerance));
   EXPECT_DOUBLE_EQ(params.at("windowStaticTolerance").props.getDouble(kOfxParamPropDefault),

@@ -97,7 +97,8 @@ struct WindowOptions {
   // quadrants' means: carried samples land at random, and a plain mean weighs each side of an
   // edge by how many samples happened to land there (+0.15 dB on the real-render yardstick, no
   // real scene lower; the analytic hdr_highlights -0.37: docs/TUNING.md, "Strata"). With
-  // passes the plain mean serves the beauty too, so that the passes still add up to it.
+  // light, factor or averaged passes the plain mean serves the beauty too, so that the passes
+  // still add up to it; Cryptomatte's IDs are weighed as the quadrants weigh their samples.
   bool strata = true;
   // Each side of a pixel's window ends at the first source frame whose samples disagree with
   // what the nearer frames gave (the colour test): a long window where the shot holds still,

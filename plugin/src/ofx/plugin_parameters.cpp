@@ -23,6 +23,7 @@ constexpr const char* kWindowMoving = "windowMoving";
 constexpr const char* kWindowSigma = "windowSigma";
 constexpr const char* kWindowFalloff = "windowFalloff";
 constexpr const char* kWindowTaper = "windowTaper";
+constexpr const char* kWindowStrata = "windowStrata";
 constexpr const char* kWindowColourTolerance = "windowColourTolerance";
 constexpr const char* kWindowStaticTolerance = "windowStaticTolerance";
 constexpr const char* kWindowReconstructionWeight = "windowReconstructionWeight";
@@ -155,6 +156,7 @@ void require(taa_node* node, taa_status status) {
 bool PluginSettings::operator==(const PluginSettings& o) const {
   auto tie = [](const PluginSettings& s) {
     return std::tie(s.mode, s.windowRadius, s.windowNear, s.windowMoving, s.windowSigma, s.windowFalloff, s.windowTaper,
+                    s.windowStrata,
                     s.windowColourTolerance, s.windowStaticTolerance,
                     s.windowReconstructionWeight, s.blend, s.rectify, s.dilateMotion, s.jitter,
                     s.jitterOffset, s.jitterPeriod, s.motionY, s.motionTo, s.motionScale,
@@ -198,6 +200,12 @@ void defineParameters(OfxParamSetHandle set) {
                 "Window mode: also weigh frames by a Hann taper over the window, so that frames "
                 "enter and leave it gently (taatool --window-taper).",
                 window.taper);
+  defineBoolean(set, kWindowStrata, "Window Strata",
+                "Window mode: average the means of the four quadrants around the pixel centre "
+                "(samples land at random). A Cryptomatte pass follows it; light, factor and "
+                "average passes take the plain mean: turn it off on the Source's own effect for "
+                "a beauty those passes add up to (taatool --window-strata).",
+                window.strata);
   defineDouble(set, kWindowColourTolerance, "Window Colour Tolerance",
                "Window mode: how far outside the frame's own colour box a sample may be; 0 turns "
                "the test off (taatool --window-colour-tolerance).",
@@ -319,6 +327,7 @@ PluginSettings readSettings(OfxImageEffectHandle effect, OfxTime time) {
   s.windowSigma = getDouble(set, kWindowSigma, time);
   s.windowFalloff = getDouble(set, kWindowFalloff, time);
   s.windowTaper = getInt(set, kWindowTaper, time) != 0;
+  s.windowStrata = getInt(set, kWindowStrata, time) != 0;
   s.windowColourTolerance = getDouble(set, kWindowColourTolerance, time);
   s.windowStaticTolerance = getDouble(set, kWindowStaticTolerance, time);
   s.windowReconstructionWeight = getDouble(set, kWindowReconstructionWeight, time);
@@ -353,6 +362,7 @@ void applySettings(taa_node* node, const PluginSettings& s, RenderScale scale) {
   require(node, taa_node_set_float(node, "window-sigma", float(s.windowSigma)));
   require(node, taa_node_set_float(node, "window-falloff", float(s.windowFalloff)));
   require(node, taa_node_set_string(node, "window-taper", s.windowTaper ? "on" : "off"));
+  require(node, taa_node_set_string(node, "window-strata", s.windowStrata ? "on" : "off"));
   require(node, taa_node_set_float(node, "window-colour-tolerance",
                                    float(s.windowColourTolerance)));
   require(node, taa_node_set_float(node, "window-static-tolerance",

@@ -25,6 +25,7 @@ struct PluginSettings {
   double windowSigma = taa::WindowOptions{}.sigma;
   double windowFalloff = taa::WindowOptions{}.falloff;
   bool windowTaper = taa::WindowOptions{}.taper;
+  bool windowStrata = taa::WindowOptions{}.strata;
   double windowColourTolerance = taa::WindowOptions{}.colourTolerance;
   double windowStaticTolerance = taa::WindowOptions{}.staticTolerance;
   double windowReconstructionWeight = taa::WindowOptions{}.reconstructionWeight;

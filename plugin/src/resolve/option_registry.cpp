@@ -206,7 +206,7 @@ std::vector<Entry> makeEntries() {
   entries.push_back(windowSwitchOption(
       {"window-strata", "Mode", "", "", "window mode: average the means of the four quadrants "
        "around the pixel centre, not every sample alike (samples land at random; the beauty "
-       "alone: with passes every channel takes the plain mean)"},
+       "and its Cryptomatte: with other passes every channel takes the plain mean)"},
       &WindowOptions::strata));
   entries.push_back(windowSwitchOption(
       {"window-adaptive", "Mode", "", "", "window mode: end each side of a pixel's window at "

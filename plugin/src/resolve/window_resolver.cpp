@@ -137,7 +137,12 @@ struct WindowResolver::Impl {
   PassSums lastSums;  // read back as the groups' ring type: half groups' sums as half
   int cryptomatteSets = 0;
   std::vector<gl::TextureArray> cryptomatteRings;  // RGBA32F, at the frames' pass layers
-  std::vector<gl::Framebuffer> cryptomatteTargets;  // a set's draw: output, -, its three ranks
+  std::vector<gl::Framebuffer> cryptomatteTargets;  // a set's draw: -, -, its three ranks
+  // Where the colour is the beauty's own draw (Cryptomatte without other passes), that draw's
+  // stratified mean counts each quadrant's samples by a factor of its own (window_gather.frag,
+  // strataShares); the Cryptomatte draws weigh their IDs by the same factors, so that a matte
+  // follows the beauty's edges. A run with pass groups takes its colour from their plain sums.
+  gl::Texture strataShares;
 
   // How a frame's samples were last classified (window_classify.frag's modes).
   struct Slot {
@@ -250,6 +255,7 @@ struct WindowResolver::Impl {
   }
 
   bool hasPasses() const { return !passHalf.empty() || cryptomatteSets > 0; }
+  bool cryptomatteFollowsStrata() const { return passHalf.empty() && cryptomatteSets > 0; }
 
   void allocatePasses() {
     passRings.clear();
@@ -258,7 +264,10 @@ struct WindowResolver::Impl {
     freePassLayers.clear();
     cryptomatteRings.clear();
     cryptomatteTargets.clear();
+    strataShares = gl::Texture();
+    gatherTarget = gl::Framebuffer();
     if (!hasPasses() || width == 0) return;
+    if (cryptomatteFollowsStrata()) strataShares = gl::Texture(gl, width, height, GL_RGBA32F);
     for (bool half : passHalf) {
       passRings.emplace_back(gl, width, height, capacity(), half ? GL_RGBA16F : GL_RGBA32F);
     }
@@ -647,8 +656,9 @@ struct WindowResolver::Impl {
         int(passTargets.size()) != groupDraws ||
         int(cryptomatteTargets.size()) != cryptomatteSets) {
       debug = debugOutput ? gl::Texture(gl, width, height, GL_RGBA32F) : gl::Texture();
-      gatherTarget = gl::Framebuffer(
-          gl, std::vector<gl::Attachment>{&output, debugOutput ? &debug : nullptr});
+      std::vector<gl::Attachment> beautyOutputs{&output, debugOutput ? &debug : nullptr};
+      if (cryptomatteFollowsStrata()) beautyOutputs.emplace_back(&strataShares);
+      gatherTarget = gl::Framebuffer(gl, beautyOutputs);
       gatherHasDebug = debugOutput;
       passTargets.clear();
       for (int d = 0; d < groupDraws; ++d) {
@@ -661,7 +671,8 @@ struct WindowResolver::Impl {
       }
       cryptomatteTargets.clear();
       for (int set = 0; set < cryptomatteSets; ++set) {
-        std::vector<gl::Attachment> attachments{&output, nullptr};
+        // The colour is the beauty's draw's, or the pass draws': not written again here.
+        std::vector<gl::Attachment> attachments{nullptr, nullptr};
         for (int rank = 0; rank < 3; ++rank) {
           attachments.emplace_back(&passOutputs[std::size_t(rank)]);
         }
@@ -747,6 +758,9 @@ struct WindowResolver::Impl {
       drawGather(-1, cryptomatteTargets[std::size_t(set)], [&](const gl::Program& p) {
         cryptomatteRings[std::size_t(set)].bind(firstPassUnit());
         p.set("uCrypto", firstPassUnit());
+        p.set("uHasStrataShares", cryptomatteFollowsStrata() ? 1 : 0);
+        if (cryptomatteFollowsStrata()) strataShares.bind(firstPassUnit() + 1);
+        p.set("uStrataShares", firstPassUnit() + 1);
       });
       for (int rank = 0; rank < 3; ++rank) {
         cryptomatteTargets[std::size_t(set)].readRGBA(
