@@ -82,6 +82,14 @@ uniform float uSigma;
 uniform float uColourTolerance;
 uniform float uDepthTolerance;
 uniform float uReconstructionWeight;
+// The region test (window_region_stats.frag): each ring layer's luma mean of its static
+// samples over the 6x6 around each 2x2 block and that mean's variance; a source two or more frames away weighs its static samples
+// by how well its mean where the pixel's surface was agrees with t's own, softly from
+// uRegionTolerance standard errors, not at all from twice as many (0: no test).
+uniform float uRegionTolerance;
+uniform sampler2DArray uRegionStats;
+const float kRegionFloor = 0.0005;  // in decision luma: flat regions' means still differ a little
+vec2 gOwnRegion;
 // A static sample never lands inside a moving object at t unless it is in front of it: where
 // the pixel's nearest surface moves, samples of the static surface behind it (a floor the
 // object stands on, at nearly the object's own depth where they touch) are rejected.
@@ -487,6 +495,7 @@ void main() {
       ownLumaSquares += w * y * y;
     }
   }
+  gOwnRegion = texelFetch(uRegionStats, ivec3(pixel / 2, uTargetLayer), 0).xy;
   gOwnDepthRow0 = vec3(signedDepths[0], signedDepths[1], signedDepths[2]);
   gOwnDepthRow1 = vec3(signedDepths[3], signedDepths[4], signedDepths[5]);
   gOwnDepthRow2 = vec3(signedDepths[6], signedDepths[7], signedDepths[8]);
@@ -601,12 +610,22 @@ void main() {
     cryptoSourceBegin();
 #endif
     if (uSourceHasCamera[k] != 0 && uTargetHasCamera) {
+      // Not at pixels with a moving sample (their surface is not where the cameras carry it),
+      // not for t+-1 (always counted, as by the tile test).
+      vec3 source = carried(fromTargetAlong, fromTargetOffset, gPosition, nearDepth);
+      vec2 theirs = texelFetch(uRegionStats,
+                               ivec3(clamp(ivec2(floor(0.5 * source.xy / source.z)), ivec2(0),
+                                           (gSize - 1) / 2),
+                                     layer), 0).xy;
+      bool tested = uRegionTolerance > 0.0 && !anyMoving && abs(offsetFrames) >= 2 &&
+                    theirs.y >= 0.0 && gOwnRegion.y >= 0.0;
+      float limit = uRegionTolerance * sqrt(theirs.y + gOwnRegion.y) + kRegionFloor;
+      frameWeight *= tested ? clamp(2.0 - abs(theirs.x - gOwnRegion.x) / limit, 0.0, 1.0) : 1.0;
       // The near surface's block, then, where the pixel needs it, a second surface's: the
       // 3x3's far one, else a thin feature found in nearer frames (or in this block). A loop
       // rather than an if: llvmpipe runs an if's body for a whole group of pixels whether or
       // not any of them takes it, but leaves a loop as soon as none of them goes on, so groups
       // with one surface skip the second block.
-      vec3 source = carried(fromTargetAlong, fromTargetOffset, gPosition, nearDepth);
       ivec2 first = cornerTexel(source.xy / source.z, jitter);
       ivec2 corner = first;
       for (int surface = 0; surface < 2; ++surface) {

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <functional>
 #include <map>
 #include <optional>
@@ -290,9 +291,10 @@ TEST_F(WindowTest, AMovingShadowIsNotSmeared) {
   const Image out = resolve(scene, frame, options);
   for (int x : {24, 26, 28}) EXPECT_GT(out.at(x, 8)[0], 0.9f) << "x " << x;
   for (int x : {15, 17, 19}) EXPECT_LT(out.at(x, 8)[0], 0.2f) << "x " << x;
-  // Without the colour test and the tile test the shadow's past and future smear over the lit
-  // pixels.
+  // Without the colour test, the region test and the tile test the shadow's past and future
+  // smear over the lit pixels.
   options.window.colourTolerance = 0.0f;
+  options.window.regionTolerance = 0.0f;
   options.window.nearRadius = 0;
   const Image smeared = resolve(scene, frame, options);
   EXPECT_LT(smeared.at(26, 8)[0], out.at(26, 8)[0] - 0.1f);
@@ -379,6 +381,48 @@ TEST_F(WindowTest, StrataBringEdgePixelsCloserToTheirCoverage) {
   ASSERT_GT(edges, 30);
   EXPECT_LT(strataError, 0.9 * plainError) << strataError / edges << " against "
                                             << plainError / edges;
+}
+
+// A still floor under one-sample noise (each sample its own, +-40 %) with a 12 px patch 35 %
+// darker moving 1.5 px a frame, as a contact shadow moves with its object: a frame's samples in the
+// patch differ from the other frames' by less than one sample's noise, so the per-pixel colour
+// test lets the unshadowed frames in; over a 5x5 region the difference is plain.
+Scene shadowOnANoisyFloor() {
+  Scene scene;
+  scene.trace = [](int frame, double x, double y, double&) {
+    const std::uint32_t seed = std::uint32_t(frame) * 73856093u ^
+                               std::uint32_t(std::floor(x * 64.0)) * 19349663u ^
+                               std::uint32_t(std::floor(y * 64.0)) * 83492791u;
+    const double noise = double((seed * 2654435761u) >> 8) / double(1u << 24);  // 0..1
+    const double patch = 8.0 + 1.5 * frame;
+    const bool shadowed = x >= patch && x < patch + 12.0 && y >= 2.0 && y < 14.0;
+    return Hit{float(0.5 * (0.6 + 0.8 * noise) * (shadowed ? 0.65 : 1.0)), 5.0};
+  };
+  return scene;
+}
+
+// The region test (--window-region-tolerance) keeps the patch where the pixel's own test
+// cannot.
+TEST_F(WindowTest, TheRegionTestKeepsAShadowThatOneSamplesNoiseHides) {
+  const Scene scene = shadowOnANoisyFloor();
+  const int frame = 8;  // the patch over x 20..32, y 2..14
+  ResolveOptions options = windowOptions(ResolveOptions{}.window.radius);
+  ASSERT_GT(options.window.regionTolerance, 0.0f);  // the default
+  const Image region = resolve(scene, frame, options);
+  options.window.regionTolerance = 0.0f;
+  const Image pixelOnly = resolve(scene, frame, options);
+  // Inside the patch, the mean brightening over the shadowed floor's own mean (the unshadowed
+  // frames' samples lighten it; the noise, left less averaged by the region test, evens out).
+  double regionMean = 0.0, pixelMean = 0.0;
+  for (int y = 5; y < 11; ++y) {
+    for (int x = 23; x < 29; ++x) {
+      regionMean += region.at(x, y)[0] / 36.0;
+      pixelMean += pixelOnly.at(x, y)[0] / 36.0;
+    }
+  }
+  const double shadowed = 0.5 * 0.65;  // the noise's mean, 35 % darker
+  EXPECT_LT(std::fabs(regionMean - shadowed), 0.5 * (pixelMean - shadowed))
+      << regionMean << " and " << pixelMean << " against " << shadowed;
 }
 
 // Each frame depends on its window alone: a resolver that has seen the whole shot and one

@@ -78,6 +78,14 @@ struct WindowOptions {
   // shading that changes over the window (moving lights, shadows) does not smear. Larger
   // keeps more samples. 0 turns the test off.
   float colourTolerance = 3.0f;
+  // The same test at the scale of a region, in standard errors of its mean: a frame two or more
+  // away from t loses its static samples at a pixel where the luma mean of its static samples
+  // over the 6x6 around the pixel's surface strays from t's own 6x6 mean (softly from this
+  // many standard errors, wholly from twice as many). 36 samples see a change that one
+  // sample's noise hides: a contact shadow moving with its object, a light's shadows
+  // sweeping (docs/TUNING.md, "The region test": lit +0.46 dB, contact +0.47, inside its
+  // shadow +2.5). 0 turns it off; off as well with passes (their rings take the memory).
+  float regionTolerance = 3.0f;
   // Pixels: a sample counts as static (carried by exact camera reprojection) when its motion
   // vector agrees with the camera's motion within this; otherwise its vectors are chained.
   float staticTolerance = 0.25f;

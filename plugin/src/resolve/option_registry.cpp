@@ -187,6 +187,12 @@ std::vector<Entry> makeEntries() {
        "shadows and lights sharp, larger keeps more samples (0: off)"},
       0.0f, kNoLimit, &WindowOptions::colourTolerance));
   entries.push_back(windowNumberOption(
+      {"window-region-tolerance", "Mode", "", "", "window mode: standard errors the luma mean "
+       "of a frame's static samples over 6x6 pixels may stray from the resolved frame's own before "
+       "that frame (two or more away) is left out there: keeps contact and moving shadows "
+       "(0: off; off with passes)"},
+      0.0f, kNoLimit, &WindowOptions::regionTolerance));
+  entries.push_back(windowNumberOption(
       {"window-static-tolerance", "Mode", "", "", "window mode: pixels within which a sample's "
        "vector must agree with the camera for exact camera reprojection; others follow their "
        "vectors"},

@@ -75,6 +75,7 @@ void validateOptions(const ResolveOptions& o) {
   if (!(w.sigma > 0.0f)) throw Error("window sigma must be > 0");
   if (!(w.falloff >= 0.0f)) throw Error("window falloff must be >= 0");
   if (!(w.colourTolerance >= 0.0f)) throw Error("window colour tolerance must be >= 0");
+  if (!(w.regionTolerance >= 0.0f)) throw Error("window region tolerance must be >= 0");
   if (!(w.staticTolerance >= 0.0f)) throw Error("window static tolerance must be >= 0");
   if (!(w.reconstructionWeight >= 0.0f)) throw Error("window reconstruction weight must be >= 0");
   if (w.nearRadius < 0) throw Error("window near radius must be >= 0");
@@ -90,7 +91,7 @@ struct WindowResolver::Impl {
   ResolveOptions options;
   gl::FullscreenTriangle triangle;
 
-  gl::Program prepareProgram, classifyProgram, countMovingProgram;
+  gl::Program prepareProgram, classifyProgram, countMovingProgram, regionStatsProgram;
   // The gather with (index 1) and without (0) the chains of moving samples: a window whose
   // frames have no moving sample uses the one without, which llvmpipe runs in half the time.
   gl::Program gatherPrograms[2];
@@ -117,6 +118,11 @@ struct WindowResolver::Impl {
   int width = 0, height = 0;
   gl::TextureArray ring, ringMotion;
   std::vector<gl::Framebuffer> layerTargets;
+  // The region test's statistics (window_region_stats.frag), a layer per ring layer, kept
+  // while the layer's classification stands (RG32F at a quarter of the pixels: 2 bytes a pixel
+  // a layer). None with passes: their rings take the memory (issue 21's bar).
+  gl::TextureArray regionStats;
+  std::vector<gl::Framebuffer> regionTargets;
   int spareLayer = 0;
   // A frame passes through these on its way into the ring.
   gl::Texture colourStage, depthStage, motionStage;
@@ -184,6 +190,7 @@ struct WindowResolver::Impl {
                                  {linearDefine, bracket.toWorking()->getShaderText()}));
     classifyProgram = gl::Program(gl, "fullscreen.vert", "window_classify.frag");
     countMovingProgram = gl::Program(gl, "fullscreen.vert", "window_count_moving.frag");
+    regionStatsProgram = gl::Program(gl, "fullscreen.vert", "window_region_stats.frag");
     for (int chains = 0; chains < 2; ++chains) {
       std::vector<std::string> prefix = {"#define CHAINS " + std::to_string(chains), linearDefine,
                                          bracket.fromWorking()->getShaderText()};
@@ -255,6 +262,20 @@ struct WindowResolver::Impl {
   }
 
   bool hasPasses() const { return !passHalf.empty() || cryptomatteSets > 0; }
+  bool regionTest() const { return options.window.regionTolerance > 0.0f && !hasPasses(); }
+  // The unit the gather reads the region statistics from: past the pass groups' units.
+  int regionStatsUnit() const { return firstPassUnit() + kPassGroupsPerDraw; }
+
+  void allocateRegionStats() {
+    regionTargets.clear();
+    regionStats = gl::TextureArray();
+    if (!regionTest() || width == 0) return;
+    regionStats =
+        gl::TextureArray(gl, (width + 1) / 2, (height + 1) / 2, capacity() + 1, GL_RG32F);
+    for (int layer = 0; layer <= capacity(); ++layer) {
+      regionTargets.emplace_back(gl, std::vector<gl::Attachment>{{regionStats, layer}});
+    }
+  }
   bool cryptomatteFollowsStrata() const { return passHalf.empty() && cryptomatteSets > 0; }
 
   void allocatePasses() {
@@ -266,6 +287,7 @@ struct WindowResolver::Impl {
     cryptomatteTargets.clear();
     strataShares = gl::Texture();
     gatherTarget = gl::Framebuffer();
+    allocateRegionStats();
     if (!hasPasses() || width == 0) return;
     if (cryptomatteFollowsStrata()) strataShares = gl::Texture(gl, width, height, GL_RGBA32F);
     for (bool half : passHalf) {
@@ -364,9 +386,23 @@ struct WindowResolver::Impl {
     triangle.draw();
     gl::checkError(gl, "window classify pass");
     std::swap(slot.layer, spareLayer);
+    if (regionTest()) writeRegionStats(slot.layer);
     slot.classified = mode;
     slot.classifiedOnce = true;
     slot.hasMoving = mode == Classify::NoCamera || (mode != Classify::AllStatic && anyMoving(slot));
+  }
+
+  // The region test's statistics of the frame at `layer`, just classified.
+  void writeRegionStats(int layer) {
+    const gl::Program& p = regionStatsProgram;
+    p.set("uRing", int(kRingUnit));
+    p.set("uLayer", layer);
+    p.set("uLinear", options.window.linear ? 1 : 0);
+    regionTargets[std::size_t(layer)].bind();
+    p.use();
+    ring.bind(kRingUnit);
+    triangle.draw();
+    gl::checkError(gl, "window region statistics pass");
   }
 
   // Whether any sample of a classified frame moves (an occlusion query, nothing written).
@@ -686,6 +722,8 @@ struct WindowResolver::Impl {
     auto setUniforms = [&](const gl::Program& p, bool tiles) {
       p.set("uSigma", options.window.sigma);
       p.set("uColourTolerance", options.window.colourTolerance);
+      p.set("uRegionTolerance", regionTest() ? options.window.regionTolerance : 0.0f);
+      p.set("uRegionStats", regionStatsUnit());
       p.set("uDepthTolerance", options.depthTolerance);
       p.set("uReconstructionWeight", options.window.reconstructionWeight);
       p.set("uOpaqueMoving", options.window.opaqueMoving ? 1 : 0);
@@ -705,6 +743,7 @@ struct WindowResolver::Impl {
       fromWorkingLuts.bind();
       gatherToWorkingLuts.bind();
       if (tiles) tileReach.bind(kTileReachUnit);
+      if (regionTest()) regionStats.bind(regionStatsUnit());
       return offsets;
     };
     const bool tiles = tileTest() && decideTiles(chains ? 1 : 0, [&](const gl::Program& p) {
