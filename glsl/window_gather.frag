@@ -83,9 +83,10 @@ uniform float uColourTolerance;
 uniform float uDepthTolerance;
 uniform float uReconstructionWeight;
 // The region test (window_region_stats.frag): each ring layer's luma mean of its static
-// samples over the 6x6 around each 2x2 block and that mean's variance; a source two or more frames away weighs its static samples
-// by how well its mean where the pixel's surface was agrees with t's own, softly from
-// uRegionTolerance standard errors, not at all from twice as many (0: no test).
+// samples over the 6x6 around each 2x2 block and that mean's variance; a source two or more
+// frames away weighs its static samples by how well its mean where the pixel's surface was
+// agrees with t's own, softly from uRegionTolerance standard errors, not at all from twice as
+// many (0: no test).
 uniform float uRegionTolerance;
 uniform sampler2DArray uRegionStats;
 const float kRegionFloor = 0.0005;  // in decision luma: flat regions' means still differ a little
@@ -94,6 +95,9 @@ vec2 gOwnRegion;
 // the pixel's nearest surface moves, samples of the static surface behind it (a floor the
 // object stands on, at nearly the object's own depth where they touch) are rejected.
 uniform bool uOpaqueMoving;
+// Pixels each way around the pixel searched for a thin feature's depth (--window-thin-search;
+// 1 or less: t's 3x3 alone).
+uniform int uThinSearchRadius;
 // Each side of the window ends, per pixel, at the first source whose samples disagree with
 // what the pixel gathered from the nearer frames: shading that changed there has changed for
 // good, farther frames would only be rejected one by one or let through by chance.
@@ -251,7 +255,8 @@ layout(location = 2) out vec4 outStrataShares;
 ivec2 gSize;
 vec2 gPosition;
 float gNearest, gFarthest;
-float gThinDepth;  // a surface nearer than all of t's samples that carried samples revealed
+float gThinDepth;  // a surface nearer than all of t's 3x3 samples: seen by t's samples around
+                   // the pixel, or revealed by carried ones
 vec4 gSum;         // t's own samples, its reconstruction, thin features
 float gWeight;
 // The source being gathered, kept apart until it is weighed whole (agreementWeight): its
@@ -546,6 +551,21 @@ void main() {
     }
   }
   float nearDepth = isinf(gNearest) ? gNearest : nearSum / nearCount;
+  // A thin feature crossing the pixel that t's own 3x3 samples all missed (a 0.3 px wire, by
+  // all three samples along it a third of the time): in the other frames its samples lie where
+  // the cameras carry the wire's depth, and a block gathered at the backdrop's depth misses
+  // them once the parallax between the two passes a pixel. t's samples a few pixels along the
+  // wire did hit it: the nearest static depth around the pixel is the second surface every
+  // source is asked for (docs/TUNING.md, "The thin search": cycles_fence +2.9 dB).
+  for (int dy = -uThinSearchRadius; dy <= uThinSearchRadius; ++dy) {
+    for (int dx = -uThinSearchRadius; dx <= uThinSearchRadius; ++dx) {
+      if (abs(dx) <= 1 && abs(dy) <= 1) continue;  // the 3x3, read above (the same for all lanes)
+      ivec2 n = clamp(pixel + ivec2(dx, dy), ivec2(0), gSize - 1);
+      float depth = ringDepth(texelFetch(uRing, ivec3(n, uTargetLayer), 0));
+      gThinDepth = depth >= 0.0 ? min(gThinDepth, depth) : gThinDepth;  // static ones
+    }
+  }
+  gThinDepth = gThinDepth < gNearest * (1.0 - split) ? gThinDepth : 1.0 / 0.0;
   float farDepth = farCount > 0.0 ? farSum / farCount : gFarthest;
 
 #if CHAINS

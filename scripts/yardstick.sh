@@ -5,6 +5,7 @@
 #
 #   bash scripts/yardstick.sh                       # all scenes, all configurations, and
 #                                                   # rewrite docs/QUALITY.md
+#   TAA_TRUTH_SAMPLES=128 bash scripts/yardstick.sh  # the same against a 128-sample truth
 #   bash scripts/yardstick.sh --scenes wires,cut --configs classic \
 #        --config reinhard="--bracket taa_reinhard"  # a quick comparison, table printed only
 set -euo pipefail
@@ -14,9 +15,16 @@ cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
 cmake --build "$build" -j"$(nproc)" --target taa-yardstick taatool taa-scenegen >/dev/null
 
 args=(--work "$build/yardstick")
+command="bash scripts/yardstick.sh"
+if [ -n "${TAA_TRUTH_SAMPLES:-}" ]; then
+  # A truth of fewer samples than the default 1024 (a machine without the long renders' cache:
+  # docs/TUNING.md, "A fresh machine, a 128-sample truth"); the page says which it used.
+  args+=(--blender-samples "$TAA_TRUTH_SAMPLES")
+  command="TAA_TRUTH_SAMPLES=$TAA_TRUTH_SAMPLES $command"
+fi
 if [ "$#" -eq 0 ]; then
   # The full run is the one the page records.
-  args+=(--doc "$root/docs/QUALITY.md" --command "bash scripts/yardstick.sh")
+  args+=(--doc "$root/docs/QUALITY.md" --command "$command")
 fi
 "$build/bin/taa-yardstick" "${args[@]}" "$@"
 if [ "$#" -eq 0 ]; then

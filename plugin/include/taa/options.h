@@ -121,6 +121,12 @@ struct WindowOptions {
   // at t has a moving one: a moving object's chains stay short, and static samples of farther
   // frames would outweigh its own at its edges. 0: the whole window.
   int movingRadius = 4;
+  // Pixels each way around the pixel where t's own samples are searched for a thin feature's
+  // depth (a wire t's 3x3 missed), 0..kMaxThinSearch; the other frames' samples at that depth
+  // are then gathered too: under parallax they lie a pixel or more from the backdrop's
+  // (cycles_fence +2.9 dB, docs/TUNING.md, "The thin search"). 0 or 1: t's 3x3 alone.
+  static constexpr int kMaxThinSearch = 8;
+  int thinSearchRadius = 4;
 };
 
 enum class Reconstruction { Centre, BlackmanHarris, Lanczos2 };

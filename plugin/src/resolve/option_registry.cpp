@@ -96,11 +96,11 @@ Entry windowNumberOption(OptionInfo info, float lo, float hi, float WindowOption
 }
 
 // A count of frames each side, 0..16, of the window resolve (ResolveOptions::window).
-Entry windowFramesOption(OptionInfo info, int WindowOptions::*field) {
+Entry windowIntegerOption(OptionInfo info, int most, int WindowOptions::*field) {
   Entry e{info, {}, {}};
-  e.set = [field, name = info.name](ResolveOptions& o, const std::string& v) {
+  e.set = [field, most, name = info.name](ResolveOptions& o, const std::string& v) {
     const int k = parseInteger(name, v, 0);
-    if (k > 16) reject(name, v, "an integer in [0, 16]");
+    if (k > most) reject(name, v, "an integer in [0, " + std::to_string(most) + "]");
     o.window.*field = k;
   };
   e.get = [field](const ResolveOptions& o) { return std::to_string(o.window.*field); };
@@ -154,21 +154,26 @@ std::vector<Entry> makeEntries() {
        "gives the same frames)"},
       {{"history", ResolveMode::History}, {"window", ResolveMode::Window}},
       &ResolveOptions::mode));
-  entries.push_back(windowFramesOption(
+  entries.push_back(windowIntegerOption(
       {"window", "Mode", "0..16", "", "window mode: K, the frames used on each side of the "
        "resolved frame at most (2K+1 kept in memory); stops at the shot's ends"},
-      &WindowOptions::radius));
-  entries.push_back(windowFramesOption(
+      16, &WindowOptions::radius));
+  entries.push_back(windowIntegerOption(
       {"window-near", "Mode", "0..16", "", "window mode: frames each side used unless a fifth "
        "of a 32 px tile rejects them (the nearest always); each tile's window reaches farther "
        "(up to --window) while those frames agree with t over the tile (0: the whole window "
        "everywhere)"},
-      &WindowOptions::nearRadius));
-  entries.push_back(windowFramesOption(
+      16, &WindowOptions::nearRadius));
+  entries.push_back(windowIntegerOption(
       {"window-moving", "Mode", "0..16", "", "window mode: frames each side whose moving "
        "samples count, and every sample of a pixel where t has a moving one (0: the whole "
        "window)"},
-      &WindowOptions::movingRadius));
+      16, &WindowOptions::movingRadius));
+  entries.push_back(windowIntegerOption(
+      {"window-thin-search", "Mode", "0..8", "", "window mode: pixels each way around a pixel "
+       "searched for a thin feature (a wire) its own 3x3 samples missed, whose samples the "
+       "other frames are then asked for too (0 or 1: the 3x3 alone)"},
+      WindowOptions::kMaxThinSearch, &WindowOptions::thinSearchRadius));
   entries.push_back(windowNumberOption(
       {"window-sigma", "Mode", "", "", "window mode: pixels, the Gaussian weighting a carried "
        "sample by its distance to the pixel centre; smaller is sharper and noisier"},

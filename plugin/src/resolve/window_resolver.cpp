@@ -80,6 +80,11 @@ void validateOptions(const ResolveOptions& o) {
   if (!(w.reconstructionWeight >= 0.0f)) throw Error("window reconstruction weight must be >= 0");
   if (w.nearRadius < 0) throw Error("window near radius must be >= 0");
   if (w.movingRadius < 0) throw Error("window moving radius must be >= 0");
+  if (w.thinSearchRadius < 0 || w.thinSearchRadius > WindowOptions::kMaxThinSearch) {
+    throw Error("window thin search must be in [0, " +
+                std::to_string(WindowOptions::kMaxThinSearch) + "], got " +
+                std::to_string(w.thinSearchRadius));
+  }
   if (!(o.depthTolerance >= 0.0f)) throw Error("depth tolerance must be >= 0");
 }
 
@@ -727,6 +732,7 @@ struct WindowResolver::Impl {
       p.set("uDepthTolerance", options.depthTolerance);
       p.set("uReconstructionWeight", options.window.reconstructionWeight);
       p.set("uOpaqueMoving", options.window.opaqueMoving ? 1 : 0);
+      p.set("uThinSearchRadius", options.window.thinSearchRadius);
       p.set("uStrata", options.window.strata ? 1 : 0);
       p.set("uAdaptive", options.window.adaptive ? 1 : 0);
       p.set("uTiles", tiles ? 1 : 0);
