@@ -95,9 +95,10 @@ vec2 gOwnRegion;
 // the pixel's nearest surface moves, samples of the static surface behind it (a floor the
 // object stands on, at nearly the object's own depth where they touch) are rejected.
 uniform bool uOpaqueMoving;
-// Pixels each way around the pixel searched for a thin feature's depth (--window-thin-search;
-// 1 or less: t's 3x3 alone).
-uniform int uThinSearchRadius;
+// The thin search (--window-thin-search): the nearest static depth of t's samples around each
+// pixel (window_thin_depth.frag); none when off.
+uniform bool uThinSearch;
+uniform sampler2D uThinDepth;
 // Each side of the window ends, per pixel, at the first source whose samples disagree with
 // what the pixel gathered from the nearer frames: shading that changed there has changed for
 // good, farther frames would only be rejected one by one or let through by chance.
@@ -557,14 +558,7 @@ void main() {
   // them once the parallax between the two passes a pixel. t's samples a few pixels along the
   // wire did hit it: the nearest static depth around the pixel is the second surface every
   // source is asked for (docs/TUNING.md, "The thin search": cycles_fence +2.9 dB).
-  for (int dy = -uThinSearchRadius; dy <= uThinSearchRadius; ++dy) {
-    for (int dx = -uThinSearchRadius; dx <= uThinSearchRadius; ++dx) {
-      if (abs(dx) <= 1 && abs(dy) <= 1) continue;  // the 3x3, read above (the same for all lanes)
-      ivec2 n = clamp(pixel + ivec2(dx, dy), ivec2(0), gSize - 1);
-      float depth = ringDepth(texelFetch(uRing, ivec3(n, uTargetLayer), 0));
-      gThinDepth = depth >= 0.0 ? min(gThinDepth, depth) : gThinDepth;  // static ones
-    }
-  }
+  gThinDepth = uThinSearch ? texelFetch(uThinDepth, pixel, 0).r : gThinDepth;
   gThinDepth = gThinDepth < gNearest * (1.0 - split) ? gThinDepth : 1.0 / 0.0;
   float farDepth = farCount > 0.0 ? farSum / farCount : gFarthest;
 

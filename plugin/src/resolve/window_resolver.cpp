@@ -97,6 +97,11 @@ struct WindowResolver::Impl {
   gl::FullscreenTriangle triangle;
 
   gl::Program prepareProgram, classifyProgram, countMovingProgram, regionStatsProgram;
+  // The thin search's nearest static depths of the frame resolved (window_thin_depth.frag):
+  // along rows, then along columns of those.
+  gl::Program thinRowProgram, thinColumnProgram;
+  gl::Texture thinRows, thinDepth;
+  gl::Framebuffer thinRowTarget, thinDepthTarget;
   // The gather with (index 1) and without (0) the chains of moving samples: a window whose
   // frames have no moving sample uses the one without, which llvmpipe runs in half the time.
   gl::Program gatherPrograms[2];
@@ -196,6 +201,12 @@ struct WindowResolver::Impl {
     classifyProgram = gl::Program(gl, "fullscreen.vert", "window_classify.frag");
     countMovingProgram = gl::Program(gl, "fullscreen.vert", "window_count_moving.frag");
     regionStatsProgram = gl::Program(gl, "fullscreen.vert", "window_region_stats.frag");
+    thinRowProgram = gl::Program(gl, gl::embeddedShaderSource("fullscreen.vert"),
+                                 gl::embeddedShaderSource("window_thin_depth.frag",
+                                                          {"#define FROM_RING 1"}));
+    thinColumnProgram = gl::Program(gl, gl::embeddedShaderSource("fullscreen.vert"),
+                                    gl::embeddedShaderSource("window_thin_depth.frag",
+                                                             {"#define FROM_RING 0"}));
     for (int chains = 0; chains < 2; ++chains) {
       std::vector<std::string> prefix = {"#define CHAINS " + std::to_string(chains), linearDefine,
                                          bracket.fromWorking()->getShaderText()};
@@ -270,6 +281,33 @@ struct WindowResolver::Impl {
   bool regionTest() const { return options.window.regionTolerance > 0.0f && !hasPasses(); }
   // The unit the gather reads the region statistics from: past the pass groups' units.
   int regionStatsUnit() const { return firstPassUnit() + kPassGroupsPerDraw; }
+  // A radius of 1 searches t's 3x3 alone, which the gather reads anyway: nothing to find.
+  bool thinSearch() const { return options.window.thinSearchRadius > 1; }
+  int thinDepthUnit() const { return regionStatsUnit() + 1; }
+
+  // The thin search's depths of frame t, at `layer` (just classified).
+  void writeThinDepth(int layer) {
+    if (!thinDepth.id()) {
+      thinRows = gl::Texture(gl, width, height, GL_R32F);
+      thinDepth = gl::Texture(gl, width, height, GL_R32F);
+      thinRowTarget = gl::Framebuffer(gl, thinRows);
+      thinDepthTarget = gl::Framebuffer(gl, thinDepth);
+    }
+    thinRowProgram.set("uRing", int(kRingUnit));
+    thinRowProgram.set("uLayer", layer);
+    thinRowProgram.set("uRadius", options.window.thinSearchRadius);
+    thinRowTarget.bind();
+    thinRowProgram.use();
+    ring.bind(kRingUnit);
+    triangle.draw();
+    thinColumnProgram.set("uRowMinimum", 0);
+    thinColumnProgram.set("uRadius", options.window.thinSearchRadius);
+    thinDepthTarget.bind();
+    thinColumnProgram.use();
+    thinRows.bind(0);
+    triangle.draw();
+    gl::checkError(gl, "window thin search pass");
+  }
 
   void allocateRegionStats() {
     regionTargets.clear();
@@ -330,6 +368,10 @@ struct WindowResolver::Impl {
     for (gl::Texture& t : stats) t = gl::Texture();
     statsTarget = gl::Framebuffer();
     tileReach = gl::Texture();
+    thinRows = gl::Texture();
+    thinDepth = gl::Texture();
+    thinRowTarget = gl::Framebuffer();
+    thinDepthTarget = gl::Framebuffer();
     ones.clear();
     zeros.clear();
     slots.clear();
@@ -691,6 +733,7 @@ struct WindowResolver::Impl {
       }
     }
     classifyWindow(first, last);
+    if (thinSearch()) writeThinDepth(slots.at(frame).layer);
     const int groups = int(passHalf.size());
     const int groupDraws = (groups + kPassGroupsPerDraw - 1) / kPassGroupsPerDraw;
     if (!gatherTarget.id() || gatherHasDebug != debugOutput ||
@@ -732,7 +775,8 @@ struct WindowResolver::Impl {
       p.set("uDepthTolerance", options.depthTolerance);
       p.set("uReconstructionWeight", options.window.reconstructionWeight);
       p.set("uOpaqueMoving", options.window.opaqueMoving ? 1 : 0);
-      p.set("uThinSearchRadius", options.window.thinSearchRadius);
+      p.set("uThinSearch", thinSearch() ? 1 : 0);
+      p.set("uThinDepth", thinDepthUnit());
       p.set("uStrata", options.window.strata ? 1 : 0);
       p.set("uAdaptive", options.window.adaptive ? 1 : 0);
       p.set("uTiles", tiles ? 1 : 0);
@@ -750,6 +794,7 @@ struct WindowResolver::Impl {
       gatherToWorkingLuts.bind();
       if (tiles) tileReach.bind(kTileReachUnit);
       if (regionTest()) regionStats.bind(regionStatsUnit());
+      if (thinSearch()) thinDepth.bind(thinDepthUnit());
       return offsets;
     };
     const bool tiles = tileTest() && decideTiles(chains ? 1 : 0, [&](const gl::Program& p) {
