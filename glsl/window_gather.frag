@@ -88,6 +88,7 @@ uniform float uReconstructionWeight;
 // agrees with t's own, softly from uRegionTolerance standard errors, not at all from twice as
 // many (0: no test).
 uniform float uRegionTolerance;
+uniform float uRegionToleranceNearMoving;
 uniform sampler2DArray uRegionStats;
 const float kRegionFloor = 0.0005;  // in decision luma: flat regions' means still differ a little
 vec2 gOwnRegion;
@@ -95,10 +96,12 @@ vec2 gOwnRegion;
 // the pixel's nearest surface moves, samples of the static surface behind it (a floor the
 // object stands on, at nearly the object's own depth where they touch) are rejected.
 uniform bool uOpaqueMoving;
-// The thin search (--window-thin-search): the nearest static depth of t's samples around each
-// pixel (window_thin_depth.frag); none when off.
+// From around each pixel of t (window_surroundings.frag): the thin search's nearest static
+// depth (--window-thin-search; none when off) and whether a moving sample is near, where the
+// region test takes uRegionToleranceNearMoving standard errors instead: a moving object's
+// contact shadow moves with it, and the floor's noise hides it from the looser test.
 uniform bool uThinSearch;
-uniform sampler2D uThinDepth;
+uniform sampler2D uSurroundings;
 // Each side of the window ends, per pixel, at the first source whose samples disagree with
 // what the pixel gathered from the nearer frames: shading that changed there has changed for
 // good, farther frames would only be rejected one by one or let through by chance.
@@ -558,7 +561,9 @@ void main() {
   // them once the parallax between the two passes a pixel. t's samples a few pixels along the
   // wire did hit it: the nearest static depth around the pixel is the second surface every
   // source is asked for (docs/TUNING.md, "The thin search": cycles_fence +2.9 dB).
-  gThinDepth = uThinSearch ? texelFetch(uThinDepth, pixel, 0).r : gThinDepth;
+  vec2 surroundings = texelFetch(uSurroundings, pixel, 0).rg;
+  gThinDepth = uThinSearch ? surroundings.r : gThinDepth;
+  bool nearMoving = surroundings.g > 0.0;
   gThinDepth = gThinDepth < gNearest * (1.0 - split) ? gThinDepth : 1.0 / 0.0;
   float farDepth = farCount > 0.0 ? farSum / farCount : gFarthest;
 
@@ -633,7 +638,8 @@ void main() {
                                      layer), 0).xy;
       bool tested = uRegionTolerance > 0.0 && !anyMoving && abs(offsetFrames) >= 2 &&
                     theirs.y >= 0.0 && gOwnRegion.y >= 0.0;
-      float limit = uRegionTolerance * sqrt(theirs.y + gOwnRegion.y) + kRegionFloor;
+      float limit = (nearMoving ? uRegionToleranceNearMoving : uRegionTolerance) *
+                    sqrt(theirs.y + gOwnRegion.y) + kRegionFloor;
       frameWeight *= tested ? clamp(2.0 - abs(theirs.x - gOwnRegion.x) / limit, 0.0, 1.0) : 1.0;
       // The near surface's block, then, where the pixel needs it, a second surface's: the
       // 3x3's far one, else a thin feature found in nearer frames (or in this block). A loop

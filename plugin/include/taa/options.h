@@ -86,6 +86,11 @@ struct WindowOptions {
   // sweeping (docs/TUNING.md, "The region test": lit +0.46 dB, contact +0.47, inside its
   // shadow +2.5). 0 turns it off; off as well with passes (their rings take the memory).
   float regionTolerance = 3.0f;
+  // The region test's tolerance within 16 px of a moving sample of t: a contact shadow moves
+  // with its object, and a floor's one-sample noise keeps its 6x6 means within the looser test
+  // (docs/TUNING.md, "The region test near moving objects": inside cycles_contact's shadow
+  // 18.43 -> 19.77 dB; 1.5 kept more of it but left aliased lines beside moving objects).
+  float regionToleranceNearMoving = 2.0f;
   // Pixels: a sample counts as static (carried by exact camera reprojection) when its motion
   // vector agrees with the camera's motion within this; otherwise its vectors are chained.
   float staticTolerance = 0.25f;

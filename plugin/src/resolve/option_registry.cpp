@@ -198,6 +198,10 @@ std::vector<Entry> makeEntries() {
        "(0: off; off with passes)"},
       0.0f, kNoLimit, &WindowOptions::regionTolerance));
   entries.push_back(windowNumberOption(
+      {"window-region-near-moving", "Mode", "", "", "window mode: the region test's standard "
+       "errors within 16 pixels of a moving object, where its contact shadow moves with it"},
+      0.0f, kNoLimit, &WindowOptions::regionToleranceNearMoving));
+  entries.push_back(windowNumberOption(
       {"window-static-tolerance", "Mode", "", "", "window mode: pixels within which a sample's "
        "vector must agree with the camera for exact camera reprojection; others follow their "
        "vectors"},

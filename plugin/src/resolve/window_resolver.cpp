@@ -40,6 +40,11 @@ enum TextureUnit : int {
 constexpr int kStatsStride = 4;
 constexpr int kTileSize = 32;
 
+// The region test's stricter tolerance (--window-region-near-moving) holds within this many
+// pixels of a moving sample of t: about a contact shadow's reach at the yardstick's 320x180
+// (docs/TUNING.md, "The region test near moving objects": 8 px kept less of the shadow).
+constexpr int kNearMovingRadius = 16;
+
 constexpr int kMaxSources = 32;  // window_gather.frag's MAX_SOURCES: K up to 16
 // Pass groups one gather writes besides the colour and diagnostics: 8 draw buffers, GL's
 // guaranteed minimum, less those two. (4, to save two frame-sized targets, cost more time
@@ -76,6 +81,9 @@ void validateOptions(const ResolveOptions& o) {
   if (!(w.falloff >= 0.0f)) throw Error("window falloff must be >= 0");
   if (!(w.colourTolerance >= 0.0f)) throw Error("window colour tolerance must be >= 0");
   if (!(w.regionTolerance >= 0.0f)) throw Error("window region tolerance must be >= 0");
+  if (!(w.regionToleranceNearMoving >= 0.0f)) {
+    throw Error("window region tolerance near moving objects must be >= 0");
+  }
   if (!(w.staticTolerance >= 0.0f)) throw Error("window static tolerance must be >= 0");
   if (!(w.reconstructionWeight >= 0.0f)) throw Error("window reconstruction weight must be >= 0");
   if (w.nearRadius < 0) throw Error("window near radius must be >= 0");
@@ -97,11 +105,11 @@ struct WindowResolver::Impl {
   gl::FullscreenTriangle triangle;
 
   gl::Program prepareProgram, classifyProgram, countMovingProgram, regionStatsProgram;
-  // The thin search's nearest static depths of the frame resolved (window_thin_depth.frag):
-  // along rows, then along columns of those.
-  gl::Program thinRowProgram, thinColumnProgram;
-  gl::Texture thinRows, thinDepth;
-  gl::Framebuffer thinRowTarget, thinDepthTarget;
+  // What the gather needs from around each pixel of the frame resolved
+  // (window_surroundings.frag): along rows, then along columns of those.
+  gl::Program surroundingsRowProgram, surroundingsProgram;
+  gl::Texture surroundingRows, surroundings;
+  gl::Framebuffer surroundingRowsTarget, surroundingsTarget;
   // The gather with (index 1) and without (0) the chains of moving samples: a window whose
   // frames have no moving sample uses the one without, which llvmpipe runs in half the time.
   gl::Program gatherPrograms[2];
@@ -201,12 +209,12 @@ struct WindowResolver::Impl {
     classifyProgram = gl::Program(gl, "fullscreen.vert", "window_classify.frag");
     countMovingProgram = gl::Program(gl, "fullscreen.vert", "window_count_moving.frag");
     regionStatsProgram = gl::Program(gl, "fullscreen.vert", "window_region_stats.frag");
-    thinRowProgram = gl::Program(gl, gl::embeddedShaderSource("fullscreen.vert"),
-                                 gl::embeddedShaderSource("window_thin_depth.frag",
-                                                          {"#define FROM_RING 1"}));
-    thinColumnProgram = gl::Program(gl, gl::embeddedShaderSource("fullscreen.vert"),
-                                    gl::embeddedShaderSource("window_thin_depth.frag",
-                                                             {"#define FROM_RING 0"}));
+    surroundingsRowProgram = gl::Program(gl, gl::embeddedShaderSource("fullscreen.vert"),
+                                         gl::embeddedShaderSource("window_surroundings.frag",
+                                                                  {"#define FROM_RING 1"}));
+    surroundingsProgram = gl::Program(gl, gl::embeddedShaderSource("fullscreen.vert"),
+                                      gl::embeddedShaderSource("window_surroundings.frag",
+                                                               {"#define FROM_RING 0"}));
     for (int chains = 0; chains < 2; ++chains) {
       std::vector<std::string> prefix = {"#define CHAINS " + std::to_string(chains), linearDefine,
                                          bracket.fromWorking()->getShaderText()};
@@ -283,30 +291,39 @@ struct WindowResolver::Impl {
   int regionStatsUnit() const { return firstPassUnit() + kPassGroupsPerDraw; }
   // A radius of 1 searches t's 3x3 alone, which the gather reads anyway: nothing to find.
   bool thinSearch() const { return options.window.thinSearchRadius > 1; }
-  int thinDepthUnit() const { return regionStatsUnit() + 1; }
+  int surroundingsUnit() const { return regionStatsUnit() + 1; }
 
-  // The thin search's depths of frame t, at `layer` (just classified).
-  void writeThinDepth(int layer) {
-    if (!thinDepth.id()) {
-      thinRows = gl::Texture(gl, width, height, GL_R32F);
-      thinDepth = gl::Texture(gl, width, height, GL_R32F);
-      thinRowTarget = gl::Framebuffer(gl, thinRows);
-      thinDepthTarget = gl::Framebuffer(gl, thinDepth);
+  // window_surroundings.frag's reductions around each pixel of `frame` (t, just classified):
+  // the thin search's depth, and nearness to a moving sample for the region test.
+  void writeSurroundings(int frame) {
+    if (!surroundings.id()) {
+      surroundingRows = gl::Texture(gl, width, height, GL_RG32F);
+      surroundings = gl::Texture(gl, width, height, GL_RG32F);
+      surroundingRowsTarget = gl::Framebuffer(gl, surroundingRows);
+      surroundingsTarget = gl::Framebuffer(gl, surroundings);
     }
-    thinRowProgram.set("uRing", int(kRingUnit));
-    thinRowProgram.set("uLayer", layer);
-    thinRowProgram.set("uRadius", options.window.thinSearchRadius);
-    thinRowTarget.bind();
-    thinRowProgram.use();
+    const int thinRadius = thinSearch() ? options.window.thinSearchRadius : 0;
+    // A frame without a moving sample has none near any pixel: its rows skip the wider loop.
+    const bool moving = regionTest() && slots.at(frame).hasMoving;
+    const int movingRadius = moving ? kNearMovingRadius : 0;
+    const gl::Program& rows = surroundingsRowProgram;
+    rows.set("uRing", int(kRingUnit));
+    rows.set("uLayer", slots.at(frame).layer);
+    rows.set("uRadius", thinRadius);
+    rows.set("uMovingRadius", movingRadius);
+    surroundingRowsTarget.bind();
+    rows.use();
     ring.bind(kRingUnit);
     triangle.draw();
-    thinColumnProgram.set("uRowMinimum", 0);
-    thinColumnProgram.set("uRadius", options.window.thinSearchRadius);
-    thinDepthTarget.bind();
-    thinColumnProgram.use();
-    thinRows.bind(0);
+    const gl::Program& columns = surroundingsProgram;
+    columns.set("uRows", 0);
+    columns.set("uRadius", thinRadius);
+    columns.set("uMovingRadius", movingRadius);
+    surroundingsTarget.bind();
+    columns.use();
+    surroundingRows.bind(0);
     triangle.draw();
-    gl::checkError(gl, "window thin search pass");
+    gl::checkError(gl, "window surroundings pass");
   }
 
   void allocateRegionStats() {
@@ -368,10 +385,10 @@ struct WindowResolver::Impl {
     for (gl::Texture& t : stats) t = gl::Texture();
     statsTarget = gl::Framebuffer();
     tileReach = gl::Texture();
-    thinRows = gl::Texture();
-    thinDepth = gl::Texture();
-    thinRowTarget = gl::Framebuffer();
-    thinDepthTarget = gl::Framebuffer();
+    surroundingRows = gl::Texture();
+    surroundings = gl::Texture();
+    surroundingRowsTarget = gl::Framebuffer();
+    surroundingsTarget = gl::Framebuffer();
     ones.clear();
     zeros.clear();
     slots.clear();
@@ -733,7 +750,7 @@ struct WindowResolver::Impl {
       }
     }
     classifyWindow(first, last);
-    if (thinSearch()) writeThinDepth(slots.at(frame).layer);
+    if (thinSearch() || regionTest()) writeSurroundings(frame);
     const int groups = int(passHalf.size());
     const int groupDraws = (groups + kPassGroupsPerDraw - 1) / kPassGroupsPerDraw;
     if (!gatherTarget.id() || gatherHasDebug != debugOutput ||
@@ -772,11 +789,12 @@ struct WindowResolver::Impl {
       p.set("uColourTolerance", options.window.colourTolerance);
       p.set("uRegionTolerance", regionTest() ? options.window.regionTolerance : 0.0f);
       p.set("uRegionStats", regionStatsUnit());
+      p.set("uRegionToleranceNearMoving", options.window.regionToleranceNearMoving);
       p.set("uDepthTolerance", options.depthTolerance);
       p.set("uReconstructionWeight", options.window.reconstructionWeight);
       p.set("uOpaqueMoving", options.window.opaqueMoving ? 1 : 0);
       p.set("uThinSearch", thinSearch() ? 1 : 0);
-      p.set("uThinDepth", thinDepthUnit());
+      p.set("uSurroundings", surroundingsUnit());
       p.set("uStrata", options.window.strata ? 1 : 0);
       p.set("uAdaptive", options.window.adaptive ? 1 : 0);
       p.set("uTiles", tiles ? 1 : 0);
@@ -794,7 +812,7 @@ struct WindowResolver::Impl {
       gatherToWorkingLuts.bind();
       if (tiles) tileReach.bind(kTileReachUnit);
       if (regionTest()) regionStats.bind(regionStatsUnit());
-      if (thinSearch()) thinDepth.bind(thinDepthUnit());
+      if (thinSearch() || regionTest()) surroundings.bind(surroundingsUnit());
       return offsets;
     };
     const bool tiles = tileTest() && decideTiles(chains ? 1 : 0, [&](const gl::Program& p) {
