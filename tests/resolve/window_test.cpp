@@ -504,6 +504,21 @@ TEST_F(WindowTest, TheRegionTestIsStricterBesideAMovingObject) {
       << strictMean << " and " << looseMean << " against " << shadowed;
 }
 
+// Away from moving samples the looser test holds: on the noisy floor without its block, the
+// near-moving tolerance changes no bit.
+TEST_F(WindowTest, TheNearMovingToleranceLeavesAStillShotAlone) {
+  const Scene scene = shadowOnANoisyFloor();
+  ResolveOptions options = windowOptions(ResolveOptions{}.window.radius);
+  options.window.regionToleranceNearMoving = 0.5f;
+  const Image strict = resolve(scene, 8, options);
+  options.window.regionToleranceNearMoving = options.window.regionTolerance;
+  const Image loose = resolve(scene, 8, options);
+  ASSERT_EQ(strict.pixels.size(), loose.pixels.size());
+  EXPECT_EQ(std::memcmp(strict.pixels.data(), loose.pixels.data(),
+                        strict.pixels.size() * sizeof(float)),
+            0);
+}
+
 // Each frame depends on its window alone: a resolver that has seen the whole shot and one
 // that holds just the window give the same bits.
 TEST_F(WindowTest, AFrameDependsOnItsWindowAlone) {

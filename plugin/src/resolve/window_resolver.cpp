@@ -303,12 +303,15 @@ struct WindowResolver::Impl {
       surroundingsTarget = gl::Framebuffer(gl, surroundings);
     }
     const int thinRadius = thinSearch() ? options.window.thinSearchRadius : 0;
-    // A frame without a moving sample has none near any pixel: its rows skip the wider loop.
-    const bool moving = regionTest() && slots.at(frame).hasMoving;
+    // A frame without a moving sample has none near any pixel, and one without cameras has
+    // only moving samples, where the region test never runs: their rows skip the wider loop.
+    const Slot& slot = slots.at(frame);
+    const bool moving =
+        regionTest() && slot.hasMoving && slot.classified != Classify::NoCamera;
     const int movingRadius = moving ? kNearMovingRadius : 0;
     const gl::Program& rows = surroundingsRowProgram;
     rows.set("uRing", int(kRingUnit));
-    rows.set("uLayer", slots.at(frame).layer);
+    rows.set("uLayer", slot.layer);
     rows.set("uRadius", thinRadius);
     rows.set("uMovingRadius", movingRadius);
     surroundingRowsTarget.bind();
