@@ -31,7 +31,7 @@
 #include "window_ring.glsl"
 #include "window_weights.glsl"
 
-#define MAX_SOURCES 32
+#define MAX_SOURCES 48
 #ifndef LINEAR_SUM
 #define LINEAR_SUM 0  // 1: the ring holds input values, summed as they are (linear light);
 #endif                // decisions on a compressed luma (decisionLuma)
@@ -121,18 +121,19 @@ uniform int uMovingRadius;
 // The tile test's input, at every uStatsStride-th pixel each way: per source 8 bits, 0 where it
 // gave no samples, else the luma of its samples' mean minus t's own (decisionLuma) as
 // 64 + 256 x difference (clamped to 1..127) and, in the high bit, whether the colour test
-// found them disagreeing; three to a float, 12 sources to a texel.
+// found them disagreeing; three to a float, 12 sources to a texel, 48 in the four.
 uniform int uStatsStride;
-layout(location = 0) out vec4 outStats[3];
-// The 12 words as three vectors, filled by selects: an array indexed by the loop's counter
+layout(location = 0) out vec4 outStats[4];
+// The 16 words as four vectors, filled by selects: an array indexed by the loop's counter
 // would live in memory, lane by lane, on llvmpipe.
-uvec4 gStatsWords[3];
+uvec4 gStatsWords[4];
 void addStatsCode(int k, uint code) {
   ivec4 word = ivec4(k / 3) - ivec4(0, 1, 2, 3);
   uint bits = code << uint(8 * (k % 3));
   gStatsWords[0] |= uvec4(equal(word, ivec4(0))) * bits;
   gStatsWords[1] |= uvec4(equal(word, ivec4(4))) * bits;
   gStatsWords[2] |= uvec4(equal(word, ivec4(8))) * bits;
+  gStatsWords[3] |= uvec4(equal(word, ivec4(12))) * bits;
 }
 #else
 layout(location = 0) out vec4 outColor;  // output colour space
@@ -430,7 +431,7 @@ void main() {
 #if TILE_STATS
   ivec2 pixel = ivec2(gl_FragCoord.xy) * uStatsStride + uStatsStride / 2;
   gPosition = vec2(pixel) + 0.5;
-  gStatsWords[0] = gStatsWords[1] = gStatsWords[2] = uvec4(0u);
+  gStatsWords[0] = gStatsWords[1] = gStatsWords[2] = gStatsWords[3] = uvec4(0u);
 #else
   ivec2 pixel = ivec2(gl_FragCoord.xy);
   gPosition = gl_FragCoord.xy;
@@ -727,6 +728,7 @@ void main() {
   outStats[0] = vec4(gStatsWords[0]);
   outStats[1] = vec4(gStatsWords[1]);
   outStats[2] = vec4(gStatsWords[2]);
+  outStats[3] = vec4(gStatsWords[3]);
 #else
   vec4 resolved = gSum / gWeight;
 #if STRATA

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 #include <OpenImageIO/imageio.h>
 
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -219,6 +220,23 @@ TEST_P(TextureTest, CheckErrorNamesTheErrorAndTheStep) {
     EXPECT_THAT(error.description(), HasSubstr("binding a bogus target"));
   }
   EXPECT_NO_THROW(checkError(gl(), "nothing"));  // the error was consumed
+}
+
+// The window resolve's ring is one texture array of 2K+2 layers (resolve/window_budget):
+// the probe says how many the driver makes, without allocating them.
+TEST_P(TextureTest, TheLargestTextureArrayIsFoundWithoutAllocatingIt) {
+  EXPECT_EQ(largestTextureArrayLayers(gl(), 64, 32, 34, GL_RGBA32UI), 34);
+  // 34 layers of 4K RGBA32UI are 4.5 GB. A driver holding them all says 34; one that does not
+  // (llvmpipe: about 1.6 GB a texture) says the most it makes, and it makes them.
+  const int layers = largestTextureArrayLayers(gl(), 3840, 2160, 34, GL_RGBA32UI);
+  EXPECT_GE(layers, 1);
+  EXPECT_LE(layers, 34);
+  if (layers < 34) {
+    EXPECT_EQ(largestTextureArrayLayers(gl(), 3840, 2160, layers + 1, GL_RGBA32UI), layers);
+  }
+  EXPECT_NO_THROW(checkError(gl(), "probing"));  // the refused proxies left no error behind
+  std::printf("largest RGBA32UI texture array at 3840x2160: %d layers; at 1920x1080: %d\n",
+              layers, largestTextureArrayLayers(gl(), 1920, 1080, 64, GL_RGBA32UI));
 }
 
 INSTANTIATE_TEST_SUITE_P(Backends, TextureTest, ::testing::Values(Backend::Egl, Backend::OsMesa),

@@ -49,7 +49,7 @@ TEST_F(OfxHostWindowTest, ParametersHaveTheLibrarysDefaults) {
   EXPECT_EQ(params.at("mode").props.getInt(kOfxParamPropDefault),
             ResolveOptions{}.mode == ResolveMode::Window ? 1 : 0);
   EXPECT_EQ(params.at("window").props.getInt(kOfxParamPropDefault), defaults.radius);
-  EXPECT_EQ(params.at("window").props.getInt(kOfxParamPropMax), 16);
+  EXPECT_EQ(params.at("window").props.getInt(kOfxParamPropMax), 24);  // issue 23: >= 23
   EXPECT_DOUBLE_EQ(params.at("windowSigma").props.getDouble(kOfxParamPropDefault),
                    double(defaults.sigma));
   EXPECT_DOUBLE_EQ(params.at("windowFalloff").props.getDouble(kOfxParamPropDefault),

@@ -133,7 +133,7 @@ def test_node_window_errors(frames):
                                         r'"window"'):
         taa.Node().resolve(1)
     with pytest.raises(taa.Error, match="option window expects"):
-        taa.Node(mode="window", window=17)
+        taa.Node(mode="window", window=25)
     with pytest.raises(taa.Error, match="option mode expects"):
         taa.Node(mode="windows")
 

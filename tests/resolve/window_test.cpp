@@ -379,6 +379,34 @@ TEST_F(WindowTest, TheTileTestEndsTheWindowWhereShadingChangesAndKeepsItWhereItH
   }
 }
 
+// The longest window (K 24: 48 sources, the last twelve of whose tile statistics fill the fourth
+// texel): frames 19 and more ahead of t brighten on the right, as a light switched on late in
+// a long static shot. The tile test stops the right tile short of them and lets the left tile
+// reach every frame.
+TEST_F(WindowTest, TheLongestWindowsFarFramesAreTestedByTile) {
+  Scene scene;
+  const int frame = 8;
+  scene.trace = [](int f, double x, double, double&) {
+    const double pattern = 2.0 + std::sin(0.9 * x);
+    return Hit{float(pattern * (x >= 32.0 && f >= frame + 19 ? 1.3 : 1.0)), 5.0};
+  };
+  ResolveOptions options = windowOptions(kMaxWindowRadius);
+  options.window.movingRadius = 0;
+  options.window.falloff = 0.0f;  // every frame alike: the far ones count as much as the near
+  options.window.nearRadius = 2;
+  const Image tiles = resolve(scene, frame, options);
+  options.window.nearRadius = 0;
+  const Image whole = resolve(scene, frame, options);
+  const double tilesError = meanError(scene, tiles, frame, 36, 40);
+  const double wholeError = meanError(scene, whole, frame, 36, 40);
+  EXPECT_LT(tilesError, 0.6 * wholeError) << tilesError << " against " << wholeError;
+  for (int y = 0; y < kHeight; ++y) {
+    for (int x = 0; x < 16; ++x) {
+      ASSERT_EQ(tiles.at(x, y)[0], whole.at(x, y)[0]) << x << "," << y;
+    }
+  }
+}
+
 // Stripes 1.6 px wide every 3.7 px (edges at every sub-pixel phase) on a still plane, the camera
 // panning 0.41 px a frame: the carried samples land at scattered offsets from the pixel centres.
 Scene stripesUnderAPan() {

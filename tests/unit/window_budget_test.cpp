@@ -67,5 +67,15 @@ TEST(WindowBudget, TheWindowIsNeverShortenedBelowItsNearFrames) {
   EXPECT_EQ(windowRadiusWithinBudget(1, 2, 1e12, true), 1);  // asked below near: as asked
 }
 
+// The ring needs 2K+2 layers in one texture array; a driver holding fewer shortens every run.
+TEST(WindowBudget, TheWindowFitsTheLargestTextureTheGlMakes) {
+  EXPECT_EQ(windowRadiusWithinLayers(16, 48), 16);
+  EXPECT_EQ(windowRadiusWithinLayers(24, 48), 23);  // llvmpipe at 1080p
+  EXPECT_EQ(windowRadiusWithinLayers(16, 34), 16);
+  EXPECT_EQ(windowRadiusWithinLayers(16, 33), 15);
+  EXPECT_EQ(windowRadiusWithinLayers(16, 12), 5);
+  EXPECT_EQ(windowRadiusWithinLayers(4, 1), 0);  // not even K 0: its error comes on creation
+}
+
 }  // namespace
 }  // namespace taa

@@ -58,9 +58,12 @@ enum class ResolveMode {
             // own motion; every frame independent of the others
 };
 
+// The longest window resolve: K frames each side at most (the gather's MAX_SOURCES is 2K).
+constexpr int kMaxWindowRadius = 24;
+
 // The window resolve's settings (used when mode is Window).
 struct WindowOptions {
-  // K: frames used on each side of the resolved frame (2K+1 in all), 0..16. The window stops
+  // K: frames used on each side of the resolved frame (2K+1 in all), 0..24. The window stops
   // at the shot's ends (gaps, reset frames). Memory grows with it: 2K+1 frames are kept.
   int radius = 16;
   // Pixels: standard deviation of the Gaussian weighting a carried sample by its distance to

@@ -55,8 +55,9 @@ int WindowFrames::radiusFor(const ResolveOptions& options, int width, int height
   const bool withPasses = passPlan_ && !passPlan_->names.empty();
   const double frameBytes =
       ringBytesPerPixel(withPasses ? &*passPlan_ : nullptr) * double(width) * double(height);
-  return windowRadiusWithinBudget(options.window.radius, options.window.nearRadius, frameBytes,
-                                  withPasses, ringBudget_);
+  const int k = windowRadiusWithinBudget(options.window.radius, options.window.nearRadius,
+                                         frameBytes, withPasses, ringBudget_);
+  return windowRadiusTheGlHolds(context_, k, width, height);
 }
 
 std::unique_ptr<WindowResolver> WindowFrames::makeResolver(const ResolveOptions& options,

@@ -169,6 +169,28 @@ void Texture::bind(int unit) const {
 
 // --- TextureArray ------------------------------------------------------------------------
 
+int largestTextureArrayLayers(const Functions& gl, int width, int height, int wanted,
+                              GLenum internalFormat) {
+  const GLenum format = baseFormat(internalFormat);
+  const GLenum type =
+      format == GL_RGBA_INTEGER || format == GL_RED_INTEGER ? GL_UNSIGNED_INT : GL_FLOAT;
+  auto accepted = [&](int layers) {
+    gl.TexImage3D(GL_PROXY_TEXTURE_2D_ARRAY, 0, static_cast<GLint>(internalFormat), width, height,
+                  layers, 0, format, type, nullptr);
+    GLint proxyWidth = 0;
+    gl.GetTexLevelParameteriv(GL_PROXY_TEXTURE_2D_ARRAY, 0, GL_TEXTURE_WIDTH, &proxyWidth);
+    gl.GetError();  // a refused proxy may also raise an error: the width is the answer
+    return proxyWidth != 0;
+  };
+  if (accepted(wanted)) return wanted;
+  int low = 0, high = wanted;  // low accepted (0: none yet), high refused
+  while (high - low > 1) {
+    const int middle = low + (high - low) / 2;
+    (accepted(middle) ? low : high) = middle;
+  }
+  return low;
+}
+
 TextureArray::TextureArray(const Functions& gl, int width, int height, int layers,
                            GLenum internalFormat)
     : width_(width), height_(height), layers_(layers) {

@@ -108,6 +108,12 @@ class TextureArray {
   int width_ = 0, height_ = 0, layers_ = 0;
 };
 
+// The most layers, up to `wanted`, of a `width` x `height` texture array of `internalFormat`
+// the driver accepts (asked with a proxy texture: nothing is allocated); 0 if not even one.
+// llvmpipe refuses a texture over about 1.6 GB: 48 layers of 1080p RGBA32UI, 12 of 4K.
+int largestTextureArrayLayers(const Functions& gl, int width, int height, int wanted,
+                              GLenum internalFormat);
+
 // What a framebuffer draws into at one location: a texture, or one layer of a texture array.
 // Converts implicitly from a Texture pointer (nullptr: nothing attached there).
 struct Attachment {

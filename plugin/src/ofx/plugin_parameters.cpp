@@ -177,17 +177,17 @@ void defineParameters(OfxParamSetHandle set) {
   defineInt(set, kWindowRadius, "Window (K)",
             "Window mode: frames used on each side of the resolved frame at most; 2K+1 are kept "
             "in memory per render thread (taatool --window).",
-            window.radius, 0, 16);
+            window.radius, 0, taa::kMaxWindowRadius);
   defineInt(set, kWindowNear, "Window Near",
             "Window mode: frames each side always used; each 32 px tile's window reaches "
             "farther, up to K, while those frames agree with the resolved one over the tile; 0 "
             "uses the whole window everywhere (taatool --window-near).",
-            window.nearRadius, 0, 16);
+            window.nearRadius, 0, taa::kMaxWindowRadius);
   defineInt(set, kWindowMoving, "Window Moving",
             "Window mode: frames each side whose moving samples count, and every sample of a "
             "pixel where the resolved frame has a moving one; 0: the whole window (taatool "
             "--window-moving).",
-            window.movingRadius, 0, 16);
+            window.movingRadius, 0, taa::kMaxWindowRadius);
   defineDouble(set, kWindowSigma, "Window Sigma",
                "Window mode: pixels, the Gaussian weighting a sample by its distance to the pixel "
                "centre; smaller is sharper and noisier (taatool --window-sigma).",

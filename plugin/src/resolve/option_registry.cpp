@@ -95,7 +95,7 @@ Entry windowNumberOption(OptionInfo info, float lo, float hi, float WindowOption
   return e;
 }
 
-// A count of frames each side, 0..16, of the window resolve (ResolveOptions::window).
+// A count of frames each side, 0..24, of the window resolve (ResolveOptions::window).
 Entry windowIntegerOption(OptionInfo info, int most, int WindowOptions::*field) {
   Entry e{info, {}, {}};
   e.set = [field, most, name = info.name](ResolveOptions& o, const std::string& v) {
@@ -155,20 +155,20 @@ std::vector<Entry> makeEntries() {
       {{"history", ResolveMode::History}, {"window", ResolveMode::Window}},
       &ResolveOptions::mode));
   entries.push_back(windowIntegerOption(
-      {"window", "Mode", "0..16", "", "window mode: K, the frames used on each side of the "
+      {"window", "Mode", "0..24", "", "window mode: K, the frames used on each side of the "
        "resolved frame at most (2K+1 kept in memory); stops at the shot's ends"},
-      16, &WindowOptions::radius));
+      kMaxWindowRadius, &WindowOptions::radius));
   entries.push_back(windowIntegerOption(
-      {"window-near", "Mode", "0..16", "", "window mode: frames each side used unless a fifth "
+      {"window-near", "Mode", "0..24", "", "window mode: frames each side used unless a fifth "
        "of a 32 px tile rejects them (the nearest always); each tile's window reaches farther "
        "(up to --window) while those frames agree with t over the tile (0: the whole window "
        "everywhere)"},
-      16, &WindowOptions::nearRadius));
+      kMaxWindowRadius, &WindowOptions::nearRadius));
   entries.push_back(windowIntegerOption(
-      {"window-moving", "Mode", "0..16", "", "window mode: frames each side whose moving "
+      {"window-moving", "Mode", "0..24", "", "window mode: frames each side whose moving "
        "samples count, and every sample of a pixel where t has a moving one (0: the whole "
        "window)"},
-      16, &WindowOptions::movingRadius));
+      kMaxWindowRadius, &WindowOptions::movingRadius));
   entries.push_back(windowIntegerOption(
       {"window-thin-search", "Mode", "0..8", "", "window mode: pixels each way around a pixel "
        "searched for a thin feature (a wire) its own 3x3 samples missed, whose samples the "

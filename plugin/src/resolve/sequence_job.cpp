@@ -605,15 +605,19 @@ void describePassKinds(const PassPlan& plan, const std::vector<std::string>& nam
 // with the passes would not fit (resolve/window_budget), the longest window that does, colour
 // included so that the passes still add up to it. Decided from the first output's header (every
 // frame of a run holds the same channels), so every chunk of a shot decides alike.
-ResolveOptions windowOptionsOf(const JobRun& run, const std::vector<int>& outputs) {
+ResolveOptions windowOptionsOf(const JobRun& run, gl::Context& context,
+                               const std::vector<int>& outputs) {
   ResolveOptions options = run.job.resolve;
   if (outputs.empty()) return options;
+  int width = 0, height = 0;
   // Every view's rings, at the size of the views with passes (a header is read only for those;
   // the views of a file share one size).
   double bytesPerPixel = 0.0, pixels = 0.0;
   bool passes = false;
   for (const io::AovLayout* layout : run.layouts) {
     const io::PassHeader header = io::readPassHeader(*layout, outputs.front());
+    width = std::max(width, header.width);
+    height = std::max(height, header.height);
     std::optional<PassPlan> plan;
     if (!header.channels.names.empty()) {
       passes = true;
@@ -634,7 +638,15 @@ ResolveOptions windowOptionsOf(const JobRun& run, const std::vector<int>& output
                          std::to_string(int(windowRingBytes(k, frameBytes) / 1e6)) +
                          " MB), colour included");
   }
-  options.window.radius = k;
+  // And as long as the GL can make the rings at all (llvmpipe: K 23 at 1080p, K 5 at 4K).
+  const int held = windowRadiusTheGlHolds(context, k, width, height);
+  if (held != k && run.callbacks.log) {
+    run.callbacks.log("window resolve: the GL cannot make the ring of K " + std::to_string(k) +
+                      " at " + std::to_string(width) + "x" + std::to_string(height) +
+                      " (2K+2 frames in one texture, larger than its largest): K " +
+                      std::to_string(held) + " instead");
+  }
+  options.window.radius = held;
   return options;
 }
 
@@ -647,7 +659,7 @@ class WindowRun {
       : run_(run),
         job_(run.job),
         outputs_(std::move(outputs)),
-        options_(windowOptionsOf(run, outputs_)),
+        options_(windowOptionsOf(run, context, outputs_)),
         plan_(planWindows(outputs_, job_.availableFrames, job_.resetFrames,
                           options_.window.radius)),
         reports_(outputs_.size()),

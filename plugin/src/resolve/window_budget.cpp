@@ -1,5 +1,7 @@
 #include "resolve/window_budget.h"
 
+#include <algorithm>
+
 namespace taa {
 
 double ringBytesPerPixel(const PassPlan* passes) {
@@ -21,6 +23,10 @@ int windowRadiusWithinBudget(int asked, int nearRadius, double frameBytes, bool 
     --radius;
   }
   return radius;
+}
+
+int windowRadiusWithinLayers(int asked, int largestLayers) {
+  return std::max(0, std::min(asked, (largestLayers - 2) / 2));
 }
 
 }  // namespace taa

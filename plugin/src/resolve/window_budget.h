@@ -29,4 +29,10 @@ double windowRingBytes(int radius, double frameBytes);
 int windowRadiusWithinBudget(int asked, int nearRadius, double frameBytes, bool withPasses,
                              double budget = kWindowRingBudget);
 
+// K for a window asked as `asked` whose rings (2K+2 layers of a texture array each) may have at
+// most `largestLayers` layers (gl::largestTextureArrayLayers): the driver's largest texture,
+// about 1.6 GB on llvmpipe, holds 48 frames of the ring at 1080p (K 23) and 12 at 4K (K 5).
+// Every run is shortened by it, colour alone too: a longer ring cannot be made at all.
+int windowRadiusWithinLayers(int asked, int largestLayers);
+
 }  // namespace taa

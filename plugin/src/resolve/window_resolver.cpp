@@ -15,6 +15,7 @@
 #include "color/ocio_gpu_resources.h"
 #include "gl/objects.h"
 #include "resolve/reconstruction_filter.h"
+#include "resolve/window_budget.h"
 #include "resolve/window_frame_weight.h"
 #include "resolve/window_tiles.h"
 #include "taa/error.h"
@@ -45,7 +46,7 @@ constexpr int kTileSize = 32;
 // (docs/TUNING.md, "The region test near moving objects": 8 px kept less of the shadow).
 constexpr int kNearMovingRadius = 16;
 
-constexpr int kMaxSources = 32;  // window_gather.frag's MAX_SOURCES: K up to 16
+constexpr int kMaxSources = 2 * kMaxWindowRadius;  // window_gather.frag's MAX_SOURCES
 // Pass groups one gather writes besides the colour and diagnostics: 8 draw buffers, GL's
 // guaranteed minimum, less those two. (4, to save two frame-sized targets, cost more time
 // than the memory was worth: docs/PERFORMANCE.md, "Fourth measurement".)
@@ -120,7 +121,7 @@ struct WindowResolver::Impl {
   gl::AnySamplesQuery movingQuery;
   // The tile test: the gather with TILE_STATS (by chains), its targets, the tiles' reach.
   gl::Program statsPrograms[2];
-  gl::Texture stats[3], tileReach;
+  gl::Texture stats[4], tileReach;
   gl::Framebuffer statsTarget;
   // The statistics read back, and unpacked to a code per pixel and source: kept between frames.
   std::vector<float> statsWords;
@@ -703,7 +704,7 @@ struct WindowResolver::Impl {
     if (!statsTarget.id()) {
       for (gl::Texture& t : stats) t = gl::Texture(gl, statsWidth, statsHeight, GL_RGBA32F);
       statsTarget = gl::Framebuffer(gl, std::vector<gl::Attachment>{&stats[0], &stats[1],
-                                                                     &stats[2]});
+                                                                     &stats[2], &stats[3]});
     }
     const gl::Program& p = statsProgram(chains);
     statsTarget.bind();
@@ -714,13 +715,13 @@ struct WindowResolver::Impl {
     p.set("uStatsStride", kStatsStride);
     triangle.draw();
     gl::checkError(gl, "window tile statistics pass");
-    // Three codes to a float word, four words to a texel, three texels: source k's code is
+    // Three codes to a float word, four words to a texel, four texels: source k's code is
     // byte k % 3 of word k / 3.
     const std::size_t pixels = std::size_t(statsWidth) * statsHeight;
     const std::size_t count = offsets.size();
     statsCodes.resize(pixels * count);
     statsWords.resize(pixels * 4);
-    for (int attachment = 0; attachment < 3 && 12 * attachment < int(count); ++attachment) {
+    for (int attachment = 0; attachment < 4 && 12 * attachment < int(count); ++attachment) {
       statsTarget.readRGBA(statsWords.data(), GL_FLOAT, attachment);
       for (std::size_t i = 0; i < pixels; ++i) {
         for (std::size_t k = 12 * std::size_t(attachment);
@@ -933,5 +934,14 @@ void WindowResolver::setPasses(const std::vector<bool>& halfGroups, int cryptoma
 PassSums WindowResolver::takePassSums() { return std::move(impl_->lastSums); }
 
 const Image& WindowResolver::lastDebug() const { return impl_->lastDebug; }
+
+int windowRadiusTheGlHolds(gl::Context& context, int asked, int width, int height) {
+  if (width <= 0 || height <= 0) return asked;
+  // The colour ring (RGBA32UI) takes the most bytes a pixel of any ring (the pass rings' float
+  // groups as many): what holds it holds them.
+  const int layers = gl::largestTextureArrayLayers(context.functions(), width, height,
+                                                   2 * asked + 2, GL_RGBA32UI);
+  return windowRadiusWithinLayers(asked, layers);
+}
 
 }  // namespace taa

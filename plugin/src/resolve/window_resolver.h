@@ -68,4 +68,10 @@ class WindowResolver {
   std::unique_ptr<Impl> impl_;
 };
 
+// K for a window asked as `asked` over frames of `width` x `height`: as long as `context`
+// (current) can make the rings' texture arrays (resolve/window_budget:
+// windowRadiusWithinLayers). Every face shortens the window by it before the first frame enters
+// a ring.
+int windowRadiusTheGlHolds(gl::Context& context, int asked, int width, int height);
+
 }  // namespace taa
