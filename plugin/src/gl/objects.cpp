@@ -54,6 +54,11 @@ GLenum baseFormat(GLenum internalFormat) {
   throw Error("unsupported texture internal format " + hexEnum(internalFormat));
 }
 
+// A pixel-transfer type `format` accepts (for an allocation without data, any it accepts).
+GLenum transferTypeOf(GLenum format) {
+  return format == GL_RGBA_INTEGER || format == GL_RED_INTEGER ? GL_UNSIGNED_INT : GL_FLOAT;
+}
+
 GLenum formatOfComponents(int components) {
   switch (components) {
     case 1: return GL_RED;
@@ -172,8 +177,7 @@ void Texture::bind(int unit) const {
 int largestTextureArrayLayers(const Functions& gl, int width, int height, int wanted,
                               GLenum internalFormat) {
   const GLenum format = baseFormat(internalFormat);
-  const GLenum type =
-      format == GL_RGBA_INTEGER || format == GL_RED_INTEGER ? GL_UNSIGNED_INT : GL_FLOAT;
+  const GLenum type = transferTypeOf(format);
   auto accepted = [&](int layers) {
     gl.TexImage3D(GL_PROXY_TEXTURE_2D_ARRAY, 0, static_cast<GLint>(internalFormat), width, height,
                   layers, 0, format, type, nullptr);
@@ -208,8 +212,7 @@ TextureArray::TextureArray(const Functions& gl, int width, int height, int layer
   gl.TexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
   gl.TexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
   gl.TexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAX_LEVEL, 0);
-  const GLenum type =
-      format == GL_RGBA_INTEGER || format == GL_RED_INTEGER ? GL_UNSIGNED_INT : GL_FLOAT;
+  const GLenum type = transferTypeOf(format);
   gl.TexImage3D(GL_TEXTURE_2D_ARRAY, 0, static_cast<GLint>(internalFormat), width, height, layers,
                 0, format, type, nullptr);
   checkError(gl, ("creating a " + std::to_string(width) + "x" + std::to_string(height) + "x" +

@@ -603,8 +603,9 @@ void describePassKinds(const PassPlan& plan, const std::vector<std::string>& nam
 
 // The window's options for a run over `outputs`: the options asked for, or, where the rings
 // with the passes would not fit (resolve/window_budget), the longest window that does, colour
-// included so that the passes still add up to it. Decided from the first output's header (every
-// frame of a run holds the same channels), so every chunk of a shot decides alike.
+// included so that the passes still add up to it; and never longer than the ring the GL can make
+// (windowRadiusTheGlHolds). Decided from the first output's header (every frame of a run holds
+// the same channels), so every chunk of a shot on one kind of machine decides alike.
 ResolveOptions windowOptionsOf(const JobRun& run, gl::Context& context,
                                const std::vector<int>& outputs) {
   ResolveOptions options = run.job.resolve;
