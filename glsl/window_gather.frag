@@ -106,6 +106,12 @@ uniform sampler2D uSurroundings;
 // what the pixel gathered from the nearer frames: shading that changed there has changed for
 // good, farther frames would only be rejected one by one or let through by chance.
 uniform bool uAdaptive;
+// A pixel settles (--window-settle) once t's own 3x3 and the sample means of its first
+// uSettleSources source frames with samples all lie within uSettle of its brightest channel:
+// farther frames would add the same value, and its loop ends (llvmpipe leaves it when a whole
+// group of pixels has). Never the tile test's draw: its statistics need every source.
+uniform float uSettle;
+uniform int uSettleSources;
 // The tile test (--window-near, resolve/window_tiles): how far each side of the window reaches,
 // in frames, per tile of uTileSize pixels (R behind, G ahead), filtered between tile centres so
 // that the window changes smoothly across tiles; a frame at a fraction of the reach counts
@@ -455,6 +461,7 @@ void main() {
   gFarthest = 0.0;
   gThinDepth = 1.0 / 0.0;
   vec3 rgbMin = vec3(1e30), rgbMax = vec3(-1e30);
+  float alphaMin = 1e30, alphaMax = -1e30;
 #if CRYPTOMATTE
   cryptoBegin();
   gStrataShares = uHasStrataShares ? texelFetch(uStrataShares, pixel, 0) : vec4(1.0);
@@ -480,6 +487,8 @@ void main() {
       filtered += uReconstruction[3 * (dy + 1) + dx + 1] * colour;
       rgbMin = min(rgbMin, colour.rgb);
       rgbMax = max(rgbMax, colour.rgb);
+      alphaMin = min(alphaMin, colour.a);
+      alphaMax = max(alphaMax, colour.a);
       float signedDepth = entry.depth;
       float depth = abs(signedDepth);
       depths[3 * (dy + 1) + dx + 1] = depth;
@@ -567,6 +576,17 @@ void main() {
   bool nearMoving = surroundings.g > 0.0;
   gThinDepth = gThinDepth < gNearest * (1.0 - split) ? gThinDepth : 1.0 / 0.0;
   float farDepth = farCount > 0.0 ? farSum / farCount : gFarthest;
+
+  // Settling: one flat surface, nothing thin or moving near, t's 3x3 within the tolerance.
+  vec4 ownMean = ownSum / ownWeight;
+  vec4 settleTolerance =
+      uSettle * vec4(vec3(max(max(abs(ownMean.r), abs(ownMean.g)), max(abs(ownMean.b), 1e-3))),
+                     1.0);
+  bool settling = TILE_STATS == 0 && uSettle > 0.0 && !twoSurfaces && isinf(gThinDepth) &&
+                  !anyMoving && !nearMoving &&
+                  all(lessThanEqual(vec4(rgbMax - rgbMin, alphaMax - alphaMin),
+                                    settleTolerance));
+  int agreeingSources = 0;
 
 #if CHAINS
   // Chains of the pixel's moving surface: where it is in the frame behind (t-1, t-2, ...) and
@@ -721,7 +741,15 @@ void main() {
       gDisagreeing += (1.0 - agreement) * gSourceWeight;
       within += gSourceLumaSquares - gSourceWeight * mean * mean;
       withinWeight += gSourceWeight;
+      settling = settling && all(lessThanEqual(abs(gSourceSum / gSourceWeight - ownMean),
+                                               settleTolerance));
+      agreeingSources += 1;
     }
+    // A thin feature carried in (gThinDepth) unsettles the pixel.
+    settling = settling && isinf(gThinDepth);
+    bool settled = settling && agreeingSources >= uSettleSources;
+    behindOpen = behindOpen && !settled;
+    aheadOpen = aheadOpen && !settled;
   }
 
 #if TILE_STATS

@@ -327,10 +327,12 @@ TEST_F(WindowTest, AMovingShadowIsNotSmeared) {
   for (int x : {24, 26, 28}) EXPECT_GT(out.at(x, 8)[0], 0.9f) << "x " << x;
   for (int x : {15, 17, 19}) EXPECT_LT(out.at(x, 8)[0], 0.2f) << "x " << x;
   // Without the colour test, the region test and the tile test the shadow's past and future
-  // smear over the lit pixels.
+  // smear over the lit pixels (and without settling, which ends a flat pixel's window at its
+  // nearest frames, before the ones that would smear it).
   options.window.colourTolerance = 0.0f;
   options.window.regionTolerance = 0.0f;
   options.window.nearRadius = 0;
+  options.window.settle = 0.0f;
   const Image smeared = resolve(scene, frame, options);
   EXPECT_LT(smeared.at(26, 8)[0], out.at(26, 8)[0] - 0.1f);
 }
@@ -545,6 +547,57 @@ TEST_F(WindowTest, TheNearMovingToleranceLeavesAStillShotAlone) {
   EXPECT_EQ(std::memcmp(strict.pixels.data(), loose.pixels.data(),
                         strict.pixels.size() * sizeof(float)),
             0);
+}
+
+// Bands 12 px wide, 1.0 and 0.25, under a pan of 0.37 px a frame: most pixels' 3x3 is flat.
+Scene wideBandsUnderAPan() {
+  Scene scene;
+  scene.cameraX = [](int frame) { return 0.37 * frame * 5.0 / kFocal; };
+  scene.trace = [](int frame, double x, double, double&) {
+    const double phase = worldXAt(x, 5.0, 0.37 * frame * 5.0 / kFocal) * kFocal / 5.0 / 24.0;
+    return Hit{phase - std::floor(phase) < 0.5 ? 1.0f : 0.25f, 5.0};
+  };
+  return scene;
+}
+
+// --window-settle: a pixel whose own 3x3 and nearest frames agree stops gathering (far fewer
+// candidate samples) and keeps its value; an edge pixel gathers its whole window as before.
+TEST_F(WindowTest, AFlatPixelStopsGatheringOnceItsNearestFramesAgree) {
+  const Scene scene = wideBandsUnderAPan();
+  ResolveOptions options = windowOptions(8);
+  ASSERT_GT(options.window.settle, 0.0f);  // the default
+  auto resolveWithDebug = [&](const ResolveOptions& o, Image& debug) {
+    WindowResolver resolver(*context_, o);
+    resolver.setDebugOutput(true);
+    Image out = resolveWith(resolver, scene, 20, o.window.radius);
+    debug = resolver.lastDebug();
+    return out;
+  };
+  Image settledDebug, wholeDebug;
+  const Image settled = resolveWithDebug(options, settledDebug);
+  options.window.settle = 0.0f;
+  const Image whole = resolveWithDebug(options, wholeDebug);
+  int flat = 0, edges = 0;
+  for (int y = 3; y < kHeight - 3; ++y) {
+    for (int x = 3; x < kWidth - 3; ++x) {
+      const float expected = truth(scene, 20, x, y);
+      const bool flatAround = truth(scene, 20, x - 2, y) == expected &&
+                              truth(scene, 20, x + 2, y) == expected &&
+                              (expected == 1.0f || expected == 0.25f);
+      const float candidates = settledDebug.at(x, y)[2], wholeCandidates = wholeDebug.at(x, y)[2];
+      if (flatAround) {
+        ++flat;
+        EXPECT_NEAR(settled.at(x, y)[0], whole.at(x, y)[0], 1e-5f) << x << "," << y;
+        EXPECT_LT(candidates, 0.5f * wholeCandidates) << x << "," << y;
+      } else if (expected > 0.26f && expected < 0.99f) {
+        ++edges;
+        EXPECT_EQ(settled.at(x, y)[0], whole.at(x, y)[0]) << x << "," << y;
+        EXPECT_EQ(candidates, wholeCandidates) << x << "," << y;
+      }
+    }
+  }
+  EXPECT_GT(flat, 100);
+  EXPECT_GT(edges, 20);
 }
 
 // Each frame depends on its window alone: a resolver that has seen the whole shot and one

@@ -135,6 +135,14 @@ struct WindowOptions {
   // (cycles_fence +2.9 dB, docs/TUNING.md, "The thin search"). 0 or 1: t's 3x3 alone.
   static constexpr int kMaxThinSearch = 8;
   int thinSearchRadius = 4;
+  // A pixel stops gathering once it has settled: t's own 3x3 samples and every sample mean of
+  // its first kSettleSources agreeing source frames lie within this fraction of the pixel's
+  // brightest channel (alpha within this much). Its farther frames would only add the same
+  // value: flat colour (sky, flat-shaded or procedural surfaces, mattes) costs a fraction of
+  // the window. Pixels with two surfaces, a thin feature or a moving sample near never settle.
+  // 0: off (docs/PERFORMANCE.md, "Settled pixels").
+  static constexpr int kSettleSources = 4;
+  float settle = 0.005f;
 };
 
 enum class Reconstruction { Centre, BlackmanHarris, Lanczos2 };

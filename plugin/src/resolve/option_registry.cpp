@@ -202,6 +202,11 @@ std::vector<Entry> makeEntries() {
        "errors within 16 pixels of a moving object, where its contact shadow moves with it"},
       0.0f, kNoLimit, &WindowOptions::regionToleranceNearMoving));
   entries.push_back(windowNumberOption(
+      {"window-settle", "Mode", "", "", "window mode: a pixel whose own samples and nearest "
+       "four frames' agree within this fraction stops gathering: flat colour takes a fraction of "
+       "the time (0: off)"},
+      0.0f, 1.0f, &WindowOptions::settle));
+  entries.push_back(windowNumberOption(
       {"window-static-tolerance", "Mode", "", "", "window mode: pixels within which a sample's "
        "vector must agree with the camera for exact camera reprojection; others follow their "
        "vectors"},

@@ -85,6 +85,7 @@ void validateOptions(const ResolveOptions& o) {
   if (!(w.regionToleranceNearMoving >= 0.0f)) {
     throw Error("window region tolerance near moving objects must be >= 0");
   }
+  if (!(w.settle >= 0.0f && w.settle <= 1.0f)) throw Error("window settle must be in [0, 1]");
   if (!(w.staticTolerance >= 0.0f)) throw Error("window static tolerance must be >= 0");
   if (!(w.reconstructionWeight >= 0.0f)) throw Error("window reconstruction weight must be >= 0");
   if (w.nearRadius < 0) throw Error("window near radius must be >= 0");
@@ -798,6 +799,8 @@ struct WindowResolver::Impl {
       p.set("uReconstructionWeight", options.window.reconstructionWeight);
       p.set("uOpaqueMoving", options.window.opaqueMoving ? 1 : 0);
       p.set("uThinSearch", thinSearch() ? 1 : 0);
+      p.set("uSettle", options.window.settle);
+      p.set("uSettleSources", WindowOptions::kSettleSources);
       p.set("uSurroundings", surroundingsUnit());
       p.set("uStrata", options.window.strata ? 1 : 0);
       p.set("uAdaptive", options.window.adaptive ? 1 : 0);
