@@ -139,8 +139,9 @@ struct WindowOptions {
   // its first kSettleSources agreeing source frames lie within this fraction of the pixel's
   // brightest channel (alpha within this much). Its farther frames would only add the same
   // value: flat colour (sky, flat-shaded or procedural surfaces, mattes) costs a fraction of
-  // the window. Pixels with two surfaces, a thin feature or a moving sample near never settle.
-  // 0: off (docs/PERFORMANCE.md, "Settled pixels").
+  // the window. Pixels with two surfaces, a thin feature or a moving sample near (within 16 px
+  // where the thin search or the region test runs the surroundings pass, else in the 3x3)
+  // never settle. 0: off (docs/PERFORMANCE.md, "Settled pixels").
   static constexpr int kSettleSources = 4;
   float settle = 0.005f;
 };
