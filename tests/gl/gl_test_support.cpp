@@ -19,7 +19,7 @@ std::vector<float> renderPass(const Functions& gl, const ShaderSource& fragment,
   framebuffer.bind();
   program.use();
   if (setup) setup(program);
-  triangle.draw();
+  triangle.draw("test pass");
   return framebuffer.readRGBA();
 }
 

@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "cli/cli_options.h"
+#include "gl/pass_profile.h"
 #include "io/camera_sidecar.h"
 #include "io/exr_writer.h"
 #include "io/frame_reader.h"
@@ -166,7 +167,11 @@ int run(std::vector<std::string> args) {
 
 int main(int argc, char** argv) {
   try {
-    return run(std::vector<std::string>(argv + 1, argv + argc));
+    const int status = run(std::vector<std::string>(argv + 1, argv + argc));
+    if (taa::gl::passProfileOn()) {
+      std::cerr << "GL passes (TAA_GL_PROFILE):\n" << taa::gl::passProfileText();
+    }
+    return status;
   } catch (const std::exception& e) {
     std::cerr << "taa-resolve-bench ERROR: " << e.what() << std::endl;
     return 1;

@@ -14,6 +14,7 @@
 #include "cli/input_report.h"
 #include "cli/progress_line.h"
 #include "fast_zlib/fast_zlib.h"
+#include "gl/pass_profile.h"
 #include "taa/error.h"
 #include "util/frame_memory.h"
 #include "util/interruption.h"
@@ -85,6 +86,10 @@ int run(const std::vector<std::string>& args) {
   };
   runSequenceJob(cl.job, callbacks);
   if (progress) progress->finish();
+  // Asked for in the environment, so printed even with -q (the measuring scripts' flag).
+  if (gl::passProfileOn()) {
+    std::cerr << "taatool: GL passes (TAA_GL_PROFILE):\n" << gl::passProfileText();
+  }
   if (!quiet) {
     for (const std::string& warning : inputReport.warnings()) {
       std::cerr << "taatool WARNING: " << warning << "\n";

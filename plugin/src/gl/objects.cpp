@@ -1,8 +1,10 @@
 #include "gl/objects.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 
+#include "gl/pass_profile.h"
 #include "gl/shader_expansion.h"
 #include "gl/shader_library.h"
 #include "taa/error.h"
@@ -444,11 +446,21 @@ FullscreenTriangle::FullscreenTriangle(const Functions& gl) {
   checkError(gl, "creating the full-screen triangle's vertex array");
 }
 
-void FullscreenTriangle::draw() const {
+void FullscreenTriangle::draw(const char* pass) const {
   const Functions& gl = vao_.gl();
   gl.BindVertexArray(vao_.id());
+  if (!passProfileOn()) {
+    gl.DrawArrays(GL_TRIANGLES, 0, 3);
+    checkError(gl, pass);
+    return;
+  }
+  gl.Finish();  // the work queued before this pass is not its time
+  const auto start = std::chrono::steady_clock::now();
   gl.DrawArrays(GL_TRIANGLES, 0, 3);
-  checkError(gl, "drawing a full-screen pass");
+  gl.Finish();
+  const std::chrono::duration<double, std::milli> took = std::chrono::steady_clock::now() - start;
+  checkError(gl, pass);
+  recordPassTime(pass, took.count());
 }
 
 }  // namespace taa::gl

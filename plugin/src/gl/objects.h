@@ -213,7 +213,8 @@ class FullscreenTriangle {
  public:
   FullscreenTriangle() = default;
   explicit FullscreenTriangle(const Functions& gl);
-  void draw() const;
+  // Draws, then checks for a GL error naming `pass` (and times it under TAA_GL_PROFILE).
+  void draw(const char* pass) const;
 
  private:
   Handle<VertexArrayDeleter> vao_;

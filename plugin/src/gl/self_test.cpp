@@ -21,7 +21,7 @@ std::vector<float> renderPattern(const Functions& gl, int width, int height) {
   FullscreenTriangle triangle(gl);
   framebuffer.bind();
   program.use();
-  triangle.draw();
+  triangle.draw("self-test pattern pass");
   std::vector<float> pixels = framebuffer.readRGBA();
   gl.UseProgram(0);
   gl.BindFramebuffer(GL_FRAMEBUFFER, 0);

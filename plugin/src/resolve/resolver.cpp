@@ -278,8 +278,7 @@ struct Resolver::Impl {
     toWorkingProgram.set("uCurrent", 0);
     current.bind(0);
     toWorkingLuts.bind();
-    triangle.draw();
-    gl::checkError(gl, "to-working pass");
+    triangle.draw("to-working pass");
   }
 
   void resolvePass(int target, int currentDepth) {
@@ -293,8 +292,7 @@ struct Resolver::Impl {
     depth[currentDepth].bind(kDepthUnit);
     depth[1 - currentDepth].bind(kPreviousDepthUnit);
     if (fusedOutput(options)) fromWorkingLuts.bind();  // the to-working pass bound its own there
-    triangle.draw();
-    gl::checkError(gl, "resolve pass");
+    triangle.draw("resolve pass");
   }
 
   // The resolve's debug attachment (reasons, weights) into lastDebug.
@@ -310,8 +308,7 @@ struct Resolver::Impl {
     outputProgram.set("uSharpen", options.sharpen);
     history[resolved].bind(kResolvedUnit);
     fromWorkingLuts.bind();
-    triangle.draw();
-    gl::checkError(gl, "output pass");
+    triangle.draw("output pass");
   }
 
   TypedImage resolve(const ResolveInput& input, SampleType outputType) {

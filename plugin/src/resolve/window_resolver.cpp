@@ -319,7 +319,7 @@ struct WindowResolver::Impl {
     surroundingRowsTarget.bind();
     rows.use();
     ring.bind(kRingUnit);
-    triangle.draw();
+    triangle.draw("window surroundings pass (rows)");
     const gl::Program& columns = surroundingsProgram;
     columns.set("uRows", 0);
     columns.set("uRadius", thinRadius);
@@ -327,8 +327,7 @@ struct WindowResolver::Impl {
     surroundingsTarget.bind();
     columns.use();
     surroundingRows.bind(0);
-    triangle.draw();
-    gl::checkError(gl, "window surroundings pass");
+    triangle.draw("window surroundings pass (columns)");
   }
 
   void allocateRegionStats() {
@@ -424,8 +423,7 @@ struct WindowResolver::Impl {
     depthStage.bind(kDepthStageUnit);
     motionStage.bind(kMotionStageUnit);
     toWorkingLuts.bind();
-    triangle.draw();
-    gl::checkError(gl, "window prepare pass");
+    triangle.draw("window prepare pass");
   }
 
   // Classifies a frame's samples (window_classify.frag) against `other` (the frame before or
@@ -452,8 +450,7 @@ struct WindowResolver::Impl {
     p.use();
     ring.bind(kRingUnit);
     ringMotion.bind(kRingMotionUnit);
-    triangle.draw();
-    gl::checkError(gl, "window classify pass");
+    triangle.draw("window classify pass");
     std::swap(slot.layer, spareLayer);
     if (regionTest()) writeRegionStats(slot.layer);
     slot.classified = mode;
@@ -470,8 +467,7 @@ struct WindowResolver::Impl {
     regionTargets[std::size_t(layer)].bind();
     p.use();
     ring.bind(kRingUnit);
-    triangle.draw();
-    gl::checkError(gl, "window region statistics pass");
+    triangle.draw("window region statistics pass");
   }
 
   // Whether any sample of a classified frame moves (an occlusion query, nothing written).
@@ -484,7 +480,7 @@ struct WindowResolver::Impl {
     ring.bind(kRingUnit);
     gl.ColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
     movingQuery.begin();
-    triangle.draw();
+    triangle.draw("window moving-sample query");
     const bool any = movingQuery.endAndRead();
     gl.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     gl::checkError(gl, "window moving-sample query");
@@ -714,8 +710,7 @@ struct WindowResolver::Impl {
     for (int offset : offsets) beyond = beyond || std::abs(offset) > options.window.nearRadius;
     if (!beyond) return false;
     p.set("uStatsStride", kStatsStride);
-    triangle.draw();
-    gl::checkError(gl, "window tile statistics pass");
+    triangle.draw("window tile statistics pass");
     // Three codes to a float word, four words to a texel, four texels: source k's code is
     // byte k % 3 of word k / 3.
     const std::size_t pixels = std::size_t(statsWidth) * statsHeight;
@@ -835,8 +830,9 @@ struct WindowResolver::Impl {
       target.bind();
       setUniforms(p, tiles);
       bindExtra(p);
-      triangle.draw();
-      gl::checkError(gl, "window gather pass");
+      triangle.draw(variant == 0    ? "window gather pass"
+                    : variant > 0   ? "window gather pass (pass groups)"
+                                    : "window gather pass (Cryptomatte)");
     };
     // Read back into the last frame's images where they are still here (takePassSums gives
     // them away); fresh ones come from the frame buffer pool.
