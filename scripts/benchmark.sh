@@ -15,7 +15,13 @@
 #      history and window modes at their defaults against oiiotool reading the same files and
 #      writing RGBA;
 #   5. "ksweep": the window mode on the same render for K = 1, 2, 4, 8, 12 (docs/QUALITY.md,
-#      "Window K sweep"), not run by default.
+#      "Window K sweep"), not run by default;
+#   6. "floor": issue 23's speed floor on the same render, not run by default: ROUNDS (default
+#      2) rounds, one after another, of the K 4 window with every later addition off (the
+#      reference the floor was set against: 0.8 frames/s on 2026-11-26's machine), `--window 4`,
+#      the default and `--window 0` (t's own samples: what a run pays at any K), each the whole
+#      24-frame shot; the medians, each against the reference's, and the floor as this machine
+#      would have it (2 s a frame where the reference took 1.25).
 # Uses Debian's /usr/bin/time, oiiotool (openimageio-tools) and blender. Environment: SIZE,
 # FRAMES, COMPRESSIONS (default "zip piz none"), PARTS ("speed memory blender" by default; any).
 set -euo pipefail
@@ -26,6 +32,7 @@ frames="${FRAMES:-24}"
 compressions="${COMPRESSIONS:-zip piz none}"
 parts="${PARTS:-speed memory blender}"
 work="$build/benchmark"
+mkdir -p "$work"
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
 cmake --build "$build" -j"$(nproc)" --target taatool taa-scenegen >/dev/null
 taatool="$build/bin/taatool"
@@ -101,7 +108,7 @@ if [[ " $parts " == *" memory "* ]]; then
 fi
 
 render="${TAA_BENCH_CACHE:-$HOME/.cache/taa/bench}/cycles_fence-1920x1080-1-24"
-if [[ " $parts " == *" blender "* || " $parts " == *" ksweep "* ]]; then
+if [[ " $parts " == *" blender "* || " $parts " == *" ksweep "* || " $parts " == *" floor "* ]]; then
   if [ ! -f "$render/input.0024.exr" ] || [ ! -f "$render/camera.json" ]; then
     blender -b --factory-startup -P "$root/samples/blender/render_scene.py" -- \
       --scene cycles_fence --out "$render" --size 1920x1080 --frames 1-24 \
@@ -156,5 +163,39 @@ if [[ " $parts " == *" ksweep "* ]]; then
     awk -v k="$k" -v s="$s" -v c="$cpu" -v m="$((kib / 1024))" \
       'BEGIN { printf "%-4s %8.2f %6.2f %13.2f %10d\n", k, s, 24 / s, c / 24, m }'
   done
+fi
+if [[ " $parts " == *" floor "* ]]; then
+  rounds="${ROUNDS:-2}"
+  reference_flags="--window 4 --window-near 0 --window-falloff 0 --window-moving 0"
+  reference_flags+=" --window-region-tolerance 0 --window-thin-search 0 --window-strata off"
+  reference_flags+=" --window-settle 0"
+  names=(reference window-4 default window-0)
+  flags=("$reference_flags" "--window 4" "" "--window 0")
+  echo "Blender Cycles render (cycles_fence), 1920x1080, 24 frames: issue 23's floor, $rounds rounds"
+  printf "%-10s %5s %8s %8s %10s\n" run round "wall s" "CPU s" "peak MiB"
+  declare -A walls=()
+  for round in $(seq 1 "$rounds"); do
+    for i in "${!names[@]}"; do
+      rm -rf "$work/out"
+      # shellcheck disable=SC2086  # the flags are words
+      read -r s kib cpu < <(measure "$taatool" -q "$render/input.####.exr" --preset cycles \
+        --frames 1-24 --compression zip -o "$work/out/r.####.exr" ${flags[$i]})
+      printf "%-10s %5d %8.2f %8.2f %10d\n" "${names[$i]}" "$round" "$s" "$cpu" "$((kib / 1024))"
+      walls[${names[$i]}]+="$s "
+    done
+  done
+  median() {
+    tr ' ' '\n' | grep . | sort -g |
+      awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'
+  }
+  reference=$(echo "${walls[reference]}" | median)
+  for name in "${names[@]}"; do
+    m=$(echo "${walls[$name]}" | median)
+    awk -v n="$name" -v m="$m" -v r="$reference" 'BEGIN {
+      printf "%-10s median %7.2f s, %5.2f s a frame, %4.2fx the reference\n", n, m, m / 24, m / r }'
+  done
+  awk -v r="$reference" 'BEGIN {
+    printf "the floor here: %.2f s a frame (1.6x the reference); --window 4 at most %.2f\n",
+      1.6 * r / 24, r / 24 }'
 fi
 rm -rf "$work/out" "$work/io"
