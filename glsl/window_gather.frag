@@ -285,6 +285,12 @@ float ownDepthAt(ivec2 q) {
   return q.x == 0 ? row.x : (q.x == 1 ? row.y : row.z);
 }
 ivec2 gPixel;
+// The pixel's 3x3 spans two surfaces and at least kWideNearSamples of its samples lie on the near
+// one: the near surface is wider than a pixel there, so t's samples tell where it covers (a
+// sub-pixel wire hits at most a row of them, and its cell would overstate it: docs/TUNING.md,
+// "Wide occluders").
+const float kWideNearSamples = 6.0;
+bool gWideNear;
 float gCandidates, gHidden, gDisagreeing;
 // The current source's uniforms, read once: indexing uniform arrays by a loop variable costs a
 // load per lane on llvmpipe each time.
@@ -364,7 +370,12 @@ void addStaticSample(ivec2 corner, ivec2 step, bool skip, ivec2 taken, float fra
   float there = ownDepthAt(q);
   bool insideMoving =
       uOpaqueMoving && there < 0.0 && !(carriedDepth < -there * (1.0 - uDepthTolerance));
-  bool hidden = hiddenBehind(carriedDepth, gFarthest, uDepthTolerance) || insideMoving;
+  // Where the pixel lies inside a surface wider than t's samples are apart (gWideNear), t's own
+  // sample nearest the landing point says what t sees there: a sample behind it is hidden
+  // even if the 3x3 also holds its surface (a 3 px wire at 1080p before the grass).
+  bool behindThere = gWideNear && hiddenBehind(carriedDepth, abs(there), uDepthTolerance);
+  bool hidden = hiddenBehind(carriedDepth, gFarthest, uDepthTolerance) || insideMoving ||
+                behindThere;
   // A thin feature t's own samples missed (nearer than all of them) cannot agree with them:
   // it is kept as it is, and farther sources look for theirs at its depth.
   bool thin = nearerThanAll(carriedDepth, gNearest, uDepthTolerance);
@@ -565,6 +576,7 @@ void main() {
     }
   }
   float nearDepth = isinf(gNearest) ? gNearest : nearSum / nearCount;
+  gWideNear = twoSurfaces && nearCount >= kWideNearSamples;
   // A thin feature crossing the pixel that t's own 3x3 samples all missed (a 0.3 px wire, by
   // all three samples along it a third of the time): in the other frames its samples lie where
   // the cameras carry the wire's depth, and a block gathered at the backdrop's depth misses
