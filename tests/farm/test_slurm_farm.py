@@ -256,8 +256,12 @@ def kill_task_1_mid_chunk(cluster, name):
     wait_for(writing_after_7, 120, "task 1 to write frames after 7", interval=0.001)
     killed = pid is not None and alive(pid)
     if killed:
-        os.kill(pid, signal.SIGKILL)
-        wait_for(lambda: not alive(pid), 10, "the killed task to go")
+        try:
+            os.kill(pid, signal.SIGKILL)
+        except ProcessLookupError:  # it ended between the check and the kill: try again
+            killed = False
+        else:
+            wait_for(lambda: not alive(pid), 10, "the killed task to go")
     killed_log = log_of(logs, job, 1)
     if not killed or "frame 12 written" in killed_log:
         subprocess.run(["scancel", job], env=cluster.env)
