@@ -12,21 +12,12 @@ Runs with Debian's /usr/bin/python3 (python3-numpy, python3-openimageio).
 import sys
 
 import numpy as np
-import OpenImageIO as oiio
+
+from crop_compare import read_rgb  # the colour of a render's or a run's file, linear
 
 
-def read_rgb(path):
-    image = oiio.ImageInput.open(path)
-    if image is None:
-        sys.exit("cannot read %s: %s" % (path, oiio.geterror()))
-    pixels = image.read_image("float")
-    names = list(image.spec().channelnames)
-    image.close()
-    rgb = [i for i, n in enumerate(names)
-           if n.endswith(("Combined.R", "Combined.G", "Combined.B")) or n in ("R", "G", "B")][:3]
-    if len(rgb) != 3:
-        sys.exit("%s: no R, G, B channels" % path)
-    linear = np.maximum(pixels[..., rgb], 0.0)
+def tonemapped(path):
+    linear = np.maximum(read_rgb(path), 0.0)
     return linear / (1.0 + linear)
 
 
@@ -39,12 +30,12 @@ def main():
         sys.exit(__doc__)
     frame = int(sys.argv[2])
     name = lambda pattern: pattern.replace("####", "%04d" % frame)
-    truth = read_rgb(name(sys.argv[1]))
+    truth = tonemapped(name(sys.argv[1]))
     thirds = np.array_split(np.arange(truth.shape[0]), 3)
     print("%-16s %8s %8s %8s %8s" % ("frame %d" % frame, "PSNR", "top", "middle", "bottom"))
     for run in sys.argv[3:]:
         label, pattern = run.split("=", 1)
-        image = read_rgb(name(pattern))
+        image = tonemapped(name(pattern))
         bands = [psnr(image[rows], truth[rows]) for rows in thirds]
         print("%-16s %8.2f %8.2f %8.2f %8.2f" % (label, psnr(image, truth), *bands))
 
