@@ -15,17 +15,7 @@ import sys
 import numpy as np
 import OpenImageIO as oiio
 
-
-def read_rgb(path):
-    image = oiio.ImageInput.open(path)
-    if image is None:
-        sys.exit("cannot read %s: %s" % (path, oiio.geterror()))
-    pixels = image.read_image("float")
-    names = list(image.spec().channelnames)
-    image.close()
-    rgb = [i for i, n in enumerate(names)
-           if n.endswith(("Combined.R", "Combined.G", "Combined.B")) or n in ("R", "G", "B")][:3]
-    return pixels[..., rgb]
+from exr_colour import read_rgb
 
 
 def main():

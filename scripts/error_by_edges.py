@@ -18,21 +18,7 @@ import sys
 import numpy as np
 import OpenImageIO as oiio
 
-
-def read_rgb(path):
-    image = oiio.ImageBuf(path)
-    if image.has_error:
-        sys.exit("cannot read %s: %s" % (path, image.geterror()))
-    names = list(image.spec().channelnames)
-    pixels = image.get_pixels(oiio.FLOAT)
-    rgb = [i for i, n in enumerate(names)
-           if n.endswith(("Combined.R", "Combined.G", "Combined.B")) or n in ("R", "G", "B")][:3]
-    return pixels[..., rgb]
-
-
-def tonemap(x):
-    x = np.maximum(x, 0.0)
-    return x / (1.0 + x)
+from exr_colour import read_rgb, yardstick_tonemap
 
 
 def depth_edges(path):
@@ -53,12 +39,12 @@ def main():
     cache, runs = sys.argv[1], sys.argv[2:]
     sums = {}
     for frame in range(5, 25):
-        truth = tonemap(read_rgb(os.path.join(cache, "truth.%04d.exr" % frame)))
+        truth = yardstick_tonemap(read_rgb(os.path.join(cache, "truth.%04d.exr" % frame)))
         edge = depth_edges(os.path.join(cache, "aux.%04d.exr" % frame))
         outputs = [("ssaa-2", os.path.join(cache, "ssaa2.%04d.exr" % frame))]
         outputs += [(run, os.path.join(run, "resolved.%04d.exr" % frame)) for run in runs]
         for name, path in outputs:
-            error = ((tonemap(read_rgb(path)) - truth) ** 2).mean(-1)
+            error = ((yardstick_tonemap(read_rgb(path)) - truth) ** 2).mean(-1)
             s = sums.setdefault(name, np.zeros(4))
             s += [error[edge].sum(), edge.sum(), error[~edge].sum(), (~edge).sum()]
     psnr = lambda mse: -10.0 * np.log10(mse)

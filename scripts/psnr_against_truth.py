@@ -13,12 +13,11 @@ import sys
 
 import numpy as np
 
-from crop_compare import read_rgb  # the colour of a render's or a run's file, linear
+from exr_colour import read_rgb, yardstick_tonemap
 
 
 def tonemapped(path):
-    linear = np.maximum(read_rgb(path), 0.0)
-    return linear / (1.0 + linear)
+    return yardstick_tonemap(read_rgb(path))
 
 
 def psnr(a, b):

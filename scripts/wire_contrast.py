@@ -16,20 +16,12 @@ import glob
 import sys
 
 import numpy as np
-import OpenImageIO as oiio
+
+from exr_colour import read_rgb, yardstick_tonemap
 
 
 def tonemapped(path):
-    image = oiio.ImageInput.open(path)
-    if image is None:
-        sys.exit("cannot read %s: %s" % (path, oiio.geterror()))
-    pixels = image.read_image("float")
-    names = list(image.spec().channelnames)
-    image.close()
-    rgb = [i for i, n in enumerate(names)
-           if n.endswith(("Combined.R", "Combined.G", "Combined.B")) or n in ("R", "G", "B")][:3]
-    x = np.maximum(pixels[..., rgb], 0.0)
-    return (x / (1.0 + x)) ** (1.0 / 2.2)
+    return yardstick_tonemap(read_rgb(path)) ** (1.0 / 2.2)
 
 
 def psnr(error):
