@@ -192,22 +192,29 @@ TEST_F(WindowTest, WithoutCamerasTheVectorsCarryTheSamples) {
 constexpr double kWireWidth = 0.3 * 2.0 / kFocal;  // 0.3 px at depth 2
 constexpr double kWireSlope = 0.15;                // world x per world y
 
-// `speed`: the camera's slide a frame; at frame 10 it is at 0.5 whatever the speed (the wire at
-// x 10).
-Scene wireBeforeBackdrop(double speed = 0.05) {
+// A bar at depth 2 (colour 1), leaning kWireSlope, before a striped backdrop (depth 20): at each
+// row it covers world x offsets [left, left + width). The camera slides `speed` a frame and is at
+// `cameraAt10` on frame 10.
+Scene barBeforeBackdrop(double left, double width, double speed, double cameraAt10) {
   Scene scene;
-  scene.cameraX = [speed](int frame) { return 0.5 + speed * (frame - 10); };
-  scene.trace = [speed](int frame, double x, double y, double&) {
-    const double camera = 0.5 + speed * (frame - 10);
-    const double wireX = worldXAt(x, 2.0, camera);
-    const double wireY = (y - kHeight / 2.0) * 2.0 / kFocal;
-    const double offset = wireX - kWireSlope * wireY;
-    if (offset >= 0.0 && offset < kWireWidth) return Hit{1.0f, 2.0};
-    const double backdropX = worldXAt(x, 20.0, camera);
+  const auto camera = [speed, cameraAt10](int frame) { return cameraAt10 + speed * (frame - 10); };
+  scene.cameraX = camera;
+  scene.trace = [=](int frame, double x, double y, double&) {
+    const double barX = worldXAt(x, 2.0, camera(frame));
+    const double barY = (y - kHeight / 2.0) * 2.0 / kFocal;
+    const double offset = barX - kWireSlope * barY;
+    if (offset >= left && offset < left + width) return Hit{1.0f, 2.0};
+    const double backdropX = worldXAt(x, 20.0, camera(frame));
     const double stripe = std::floor(backdropX / (3.0 * 20.0 / kFocal));
     return Hit{std::fmod(std::fabs(stripe), 2.0) == 0.0 ? 0.3f : 0.1f, 20.0};
   };
   return scene;
+}
+
+// The 0.3 px wire; `speed`: the camera's slide a frame; at frame 10 it is at 0.5 whatever the
+// speed (the wire at x 10).
+Scene wireBeforeBackdrop(double speed = 0.05) {
+  return barBeforeBackdrop(0.0, kWireWidth, speed, 0.5);
 }
 
 TEST_F(WindowTest, ThinFeatureBeforeAMovingBackdropSurvives) {
@@ -274,19 +281,7 @@ TEST_F(WindowTest, AWireTheRowsOwnSamplesMissedIsFoundUnderLargeParallax) {
 // samples pass the 3x3's test; t's own sample nearest where each lands says the bar covers it
 // (docs/TUNING.md, "Wide occluders").
 Scene wideBarBeforeBackdrop() {
-  Scene scene;
-  scene.cameraX = [](int frame) { return 0.2 * (frame - 10); };
-  scene.trace = [](int frame, double x, double y, double&) {
-    const double camera = 0.2 * (frame - 10);
-    const double barX = worldXAt(x, 2.0, camera);
-    const double barY = (y - kHeight / 2.0) * 2.0 / kFocal;
-    const double offset = barX - kWireSlope * barY;
-    if (offset >= -0.08 && offset < 0.08) return Hit{1.0f, 2.0};  // 3.2 px at depth 2
-    const double backdropX = worldXAt(x, 20.0, camera);
-    const double stripe = std::floor(backdropX / (3.0 * 20.0 / kFocal));
-    return Hit{std::fmod(std::fabs(stripe), 2.0) == 0.0 ? 0.3f : 0.1f, 20.0};
-  };
-  return scene;
+  return barBeforeBackdrop(-0.08, 0.16, 0.2, 0.0);  // 3.2 px at depth 2
 }
 
 TEST_F(WindowTest, AWideBarKeepsTheBackdropsSamplesOutOfItsInside) {
