@@ -84,9 +84,9 @@ uniform float uDepthTolerance;
 uniform float uReconstructionWeight;
 // The region test (window_region_stats.frag): each ring layer's luma mean of its static
 // samples over the 6x6 around each 2x2 block and that mean's variance; a source two or more
-// frames away weighs its static samples by how well its mean where the pixel's surface was
-// agrees with t's own, softly from uRegionTolerance standard errors, not at all from twice as
-// many (0: no test).
+// frames away (near a moving object, t+-1 too) weighs its static samples by how well its mean
+// where the pixel's surface was agrees with t's own, softly from uRegionTolerance standard
+// errors, not at all from twice as many (0: no test).
 uniform float uRegionTolerance;
 uniform float uRegionToleranceNearMoving;
 uniform sampler2DArray uRegionStats;
@@ -98,8 +98,9 @@ vec2 gOwnRegion;
 uniform bool uOpaqueMoving;
 // From around each pixel of t (window_surroundings.frag): the thin search's nearest static
 // depth (--window-thin-search; none when off) and whether a moving sample is near, where the
-// region test takes uRegionToleranceNearMoving standard errors instead: a moving object's
-// contact shadow moves with it, and the floor's noise hides it from the looser test.
+// region test takes uRegionToleranceNearMoving standard errors instead and tests t+-1 too: a
+// moving object's contact shadow moves with it (at 1080p far enough in a frame that t+-1 saw
+// lit floor where it is), and the floor's noise hides it from the looser test.
 uniform bool uThinSearch;
 uniform sampler2D uSurroundings;
 // Each side of the window ends, per pixel, at the first source whose samples disagree with
@@ -663,14 +664,15 @@ void main() {
 #endif
     if (uSourceHasCamera[k] != 0 && uTargetHasCamera) {
       // Not at pixels with a moving sample (their surface is not where the cameras carry it),
-      // not for t+-1 (always counted, as by the tile test).
+      // nor for t+-1 away from moving ones (always counted there, as by the tile test).
       vec3 source = carried(fromTargetAlong, fromTargetOffset, gPosition, nearDepth);
       vec2 theirs = texelFetch(uRegionStats,
                                ivec3(clamp(ivec2(floor(0.5 * source.xy / source.z)), ivec2(0),
                                            (gSize - 1) / 2),
                                      layer), 0).xy;
-      bool tested = uRegionTolerance > 0.0 && !anyMoving && abs(offsetFrames) >= 2 &&
-                    theirs.y >= 0.0 && gOwnRegion.y >= 0.0;
+      bool tested = uRegionTolerance > 0.0 && !anyMoving &&
+                    (abs(offsetFrames) >= 2 || nearMoving) && theirs.y >= 0.0 &&
+                    gOwnRegion.y >= 0.0;
       float limit = (nearMoving ? uRegionToleranceNearMoving : uRegionTolerance) *
                     sqrt(theirs.y + gOwnRegion.y) + kRegionFloor;
       frameWeight *= tested ? clamp(2.0 - abs(theirs.x - gOwnRegion.x) / limit, 0.0, 1.0) : 1.0;

@@ -6,10 +6,14 @@
 //   samples in the (2R+1)^2 around the pixel (moving samples count as infinitely far). The
 //   square takes t's 3x3 in too, which changes nothing: those depths are no nearer than the
 //   3x3's nearest, and the gather keeps only a nearer one;
-// - G, 1 where a moving sample of t lies within uMovingRadius pixels each way: the region
-//   test's stricter tolerance applies there (a moving object's contact shadow moves with it).
-//   uMovingRadius is 0 in a frame without moving samples: nothing to look for.
-// 2 (2 max(R, uMovingRadius) + 1) fetches a pixel, where the gather read (2R+1)^2 - 9 for R.
+// - G, 1 where a moving sample of t lies within uMovingRadius pixels each way, looked for at
+//   every uMovingStride-th pixel (the stride grows with the picture, so that the radius covers
+//   the same part of it at any size for the same fetches; a moving object narrower than the
+//   stride may be missed): the region test's stricter tolerance applies there (a moving
+//   object's contact shadow moves with it). uMovingRadius is 0 in a frame without moving
+//   samples: nothing to look for.
+// 2 (2R + 1) + 2 (2 uMovingRadius / uMovingStride + 1) fetches a pixel, where the gather read
+// (2R+1)^2 - 9 for R.
 
 #include "window_ring.glsl"
 
@@ -19,6 +23,7 @@
 
 uniform int uRadius;
 uniform int uMovingRadius;  // G: whether a moving sample lies within this many pixels
+uniform int uMovingStride;  // looking at every this many
 #if FROM_RING
 uniform usampler2DArray uRing;
 uniform int uLayer;
@@ -38,20 +43,24 @@ void main() {
   ivec2 step = ivec2(0, 1);
 #endif
   float nearest = 1.0 / 0.0;
-  float moving = 0.0;
-  int reach = max(uRadius, uMovingRadius);
-  for (int d = -reach; d <= reach; ++d) {
+  for (int d = -uRadius; d <= uRadius; ++d) {
     ivec2 n = clamp(pixel + d * step, ivec2(0), size - 1);  // edges repeat, as in the gather
 #if FROM_RING
     float depth = ringDepth(texelFetch(uRing, ivec3(n, uLayer), 0));
-    float movingHere = depth < 0.0 ? 1.0 : 0.0;
 #else
-    vec2 row = texelFetch(uRows, n, 0).rg;
-    float depth = row.r;
-    float movingHere = row.g;
+    float depth = texelFetch(uRows, n, 0).r;
 #endif
-    nearest = depth >= 0.0 && abs(d) <= uRadius ? min(nearest, depth) : nearest;  // static only
-    moving = abs(d) <= uMovingRadius ? max(moving, movingHere) : moving;
+    nearest = depth >= 0.0 ? min(nearest, depth) : nearest;  // static samples only
+  }
+  float moving = 0.0;
+  int steps = uMovingRadius / uMovingStride;
+  for (int m = -steps; m <= steps; ++m) {
+    ivec2 n = clamp(pixel + m * uMovingStride * step, ivec2(0), size - 1);
+#if FROM_RING
+    moving = max(moving, ringDepth(texelFetch(uRing, ivec3(n, uLayer), 0)) < 0.0 ? 1.0 : 0.0);
+#else
+    moving = max(moving, texelFetch(uRows, n, 0).g);
+#endif
   }
   outSurroundings = vec2(nearest, moving);
 }

@@ -199,7 +199,8 @@ std::vector<Entry> makeEntries() {
       0.0f, kNoLimit, &WindowOptions::regionTolerance));
   entries.push_back(windowNumberOption(
       {"window-region-near-moving", "Mode", "", "", "window mode: the region test's standard "
-       "errors within 16 pixels of a moving object, where its contact shadow moves with it"},
+       "errors near a moving object (within 16 px at 320x180, 96 at 1080p), where its contact "
+       "shadow moves with it"},
       0.0f, kNoLimit, &WindowOptions::regionToleranceNearMoving));
   entries.push_back(windowNumberOption(
       {"window-settle", "Mode", "", "", "window mode: a pixel whose own samples and nearest "

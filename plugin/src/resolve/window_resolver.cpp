@@ -42,9 +42,12 @@ constexpr int kStatsStride = 4;
 constexpr int kTileSize = 32;
 
 // The region test's stricter tolerance (--window-region-near-moving) holds within this many
-// pixels of a moving sample of t: about a contact shadow's reach at the yardstick's 320x180
-// (docs/TUNING.md, "The region test near moving objects": 8 px kept less of the shadow).
+// steps of a moving sample of t, a step a pixel at the yardstick's 320x180 and more in a larger
+// picture (nearMovingStride): a contact shadow's reach grows with the picture (docs/TUNING.md,
+// "The region test near moving objects": 8 px kept less of the shadow at 320x180; "Contact
+// shadows at 1080p": 16 px kept half of it).
 constexpr int kNearMovingRadius = 16;
+constexpr int kNearMovingReferenceSize = 180;  // the shorter side where a step is a pixel
 
 constexpr int kMaxSources = 2 * kMaxWindowRadius;  // window_gather.frag's MAX_SOURCES
 // Pass groups one gather writes besides the colour and diagnostics: 8 draw buffers, GL's
@@ -294,6 +297,11 @@ struct WindowResolver::Impl {
   // A radius of 1 searches t's 3x3 alone, which the gather reads anyway: nothing to find.
   bool thinSearch() const { return options.window.thinSearchRadius > 1; }
   int surroundingsUnit() const { return regionStatsUnit() + 1; }
+  // Pixels a step of the search for moving samples (kNearMovingRadius): the picture's shorter
+  // side over 180, at least 1 (6 at 1920x1080).
+  int nearMovingStride() const {
+    return std::max(1, std::min(width, height) / kNearMovingReferenceSize);
+  }
 
   // window_surroundings.frag's reductions around each pixel of `frame` (t, just classified):
   // the thin search's depth, and nearness to a moving sample for the region test.
@@ -310,12 +318,14 @@ struct WindowResolver::Impl {
     const Slot& slot = slots.at(frame);
     const bool moving =
         regionTest() && slot.hasMoving && slot.classified != Classify::NoCamera;
-    const int movingRadius = moving ? kNearMovingRadius : 0;
+    const int movingStride = nearMovingStride();
+    const int movingRadius = moving ? kNearMovingRadius * movingStride : 0;
     const gl::Program& rows = surroundingsRowProgram;
     rows.set("uRing", int(kRingUnit));
     rows.set("uLayer", slot.layer);
     rows.set("uRadius", thinRadius);
     rows.set("uMovingRadius", movingRadius);
+    rows.set("uMovingStride", movingStride);
     surroundingRowsTarget.bind();
     rows.use();
     ring.bind(kRingUnit);
@@ -324,6 +334,7 @@ struct WindowResolver::Impl {
     columns.set("uRows", 0);
     columns.set("uRadius", thinRadius);
     columns.set("uMovingRadius", movingRadius);
+    columns.set("uMovingStride", movingStride);
     surroundingsTarget.bind();
     columns.use();
     surroundingRows.bind(0);
