@@ -509,6 +509,17 @@ Scene shadowOnANoisyFloor(double speed = 1.5) {
   return scene;
 }
 
+// The mean of `image`'s first channel over columns [x0, x1) and rows [y0, y1).
+double meanOver(const Image& image, int x0, int x1, int y0, int y1) {
+  double sum = 0.0;
+  for (int y = y0; y < y1; ++y) {
+    for (int x = x0; x < x1; ++x) sum += image.at(x, y)[0];
+  }
+  return sum / double((x1 - x0) * (y1 - y0));
+}
+
+constexpr double kShadowedFloor = 0.5 * 0.65;  // the noisy floor's mean, 35 % darker
+
 // The region test (--window-region-tolerance) keeps the patch where the pixel's own test
 // cannot.
 TEST_F(WindowTest, TheRegionTestKeepsAShadowThatOneSamplesNoiseHides) {
@@ -521,16 +532,10 @@ TEST_F(WindowTest, TheRegionTestKeepsAShadowThatOneSamplesNoiseHides) {
   const Image pixelOnly = resolve(scene, frame, options);
   // Inside the patch, the mean brightening over the shadowed floor's own mean (the unshadowed
   // frames' samples lighten it; the noise, left less averaged by the region test, evens out).
-  double regionMean = 0.0, pixelMean = 0.0;
-  for (int y = 5; y < 11; ++y) {
-    for (int x = 23; x < 29; ++x) {
-      regionMean += region.at(x, y)[0] / 36.0;
-      pixelMean += pixelOnly.at(x, y)[0] / 36.0;
-    }
-  }
-  const double shadowed = 0.5 * 0.65;  // the noise's mean, 35 % darker
-  EXPECT_LT(std::fabs(regionMean - shadowed), 0.5 * (pixelMean - shadowed))
-      << regionMean << " and " << pixelMean << " against " << shadowed;
+  const double regionMean = meanOver(region, 23, 29, 5, 11);
+  const double pixelMean = meanOver(pixelOnly, 23, 29, 5, 11);
+  EXPECT_LT(std::fabs(regionMean - kShadowedFloor), 0.5 * (pixelMean - kShadowedFloor))
+      << regionMean << " and " << pixelMean << " against " << kShadowedFloor;
 }
 
 // shadowOnANoisyFloor with the block that casts the patch standing in front of it, nearer
@@ -562,19 +567,10 @@ TEST_F(WindowTest, TheRegionTestIsStricterBesideAMovingObject) {
   const Image loose = resolve(scene, frame, options);
   // The mean brightening over the shadowed floor's own mean across the whole patch, its
   // edges included (measured: 0.015 with the default, 0.035 with 3).
-  double strictMean = 0.0, looseMean = 0.0;
-  int count = 0;
-  for (int y = 3; y < 13; ++y) {
-    for (int x = 21; x < 31; ++x, ++count) {
-      strictMean += strict.at(x, y)[0];
-      looseMean += loose.at(x, y)[0];
-    }
-  }
-  strictMean /= count;
-  looseMean /= count;
-  const double shadowed = 0.5 * 0.65;
-  EXPECT_LT(std::fabs(strictMean - shadowed), 0.6 * (looseMean - shadowed))
-      << strictMean << " and " << looseMean << " against " << shadowed;
+  const double strictMean = meanOver(strict, 21, 31, 3, 13);
+  const double looseMean = meanOver(loose, 21, 31, 3, 13);
+  EXPECT_LT(std::fabs(strictMean - kShadowedFloor), 0.6 * (looseMean - kShadowedFloor))
+      << strictMean << " and " << looseMean << " against " << kShadowedFloor;
 }
 
 // The same contact shadow moving 8 px a frame, as a 1080p render's does: where the patch is at
@@ -589,19 +585,10 @@ TEST_F(WindowTest, NearAMovingObjectTheNextFramesAreRegionTestedToo) {
   const Image strict = resolve(scene, frame, options);
   options.window.regionToleranceNearMoving = 1000.0f;
   const Image loose = resolve(scene, frame, options);
-  double strictMean = 0.0, looseMean = 0.0;
-  int count = 0;
-  for (int y = 4; y < 12; ++y) {
-    for (int x = 22; x < 30; ++x, ++count) {
-      strictMean += strict.at(x, y)[0];
-      looseMean += loose.at(x, y)[0];
-    }
-  }
-  strictMean /= count;
-  looseMean /= count;
-  const double shadowed = 0.5 * 0.65;
-  EXPECT_LT(std::fabs(strictMean - shadowed), 0.5 * (looseMean - shadowed))
-      << strictMean << " and " << looseMean << " against " << shadowed;
+  const double strictMean = meanOver(strict, 22, 30, 4, 12);
+  const double looseMean = meanOver(loose, 22, 30, 4, 12);
+  EXPECT_LT(std::fabs(strictMean - kShadowedFloor), 0.5 * (looseMean - kShadowedFloor))
+      << strictMean << " and " << looseMean << " against " << kShadowedFloor;
 }
 
 // Away from moving samples the looser test holds: on the noisy floor without its block, the
