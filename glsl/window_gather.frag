@@ -51,6 +51,7 @@
 #ifndef CHAINS
 #define CHAINS 1  // 0: no frame of the window has moving samples; the chains' code is left out
 #endif            // (llvmpipe would run it, masked, for every pixel)
+const int kInversionSteps = 4;  // the most fixed-point steps of a chain ahead (see the chains)
 
 uniform usampler2DArray uRing;  // each frame's jittered samples (window_ring.glsl)
 uniform usampler2DArray uRingMotion;  // and their motion, at the same layer
@@ -701,14 +702,19 @@ void main() {
     bool behindStep = offsetFrames < 0;
     bool alive = behindStep ? behindAlive : aheadAlive;
     // Ahead: invert the next frame's vectors, q with q + motion(q) = the position one frame
-    // before, from the last step's velocity, in two fixed-point steps while on screen.
+    // before, from the last step's velocity, by fixed-point steps while on screen, until a step
+    // lands in the texel it read (the next would change nothing), kInversionSteps at most. Two
+    // steps were enough for a slide; a tumbling cube at 1080p (60 px a frame) needs more
+    // (docs/TUNING.md, "Chains ahead at 1080p").
     vec2 chained = behindStep ? behind : aheadPrevious + velocity;
-    bool inside = !behindStep;
-    for (int iteration = 0; iteration < 2; ++iteration) {
+    bool inside = !behindStep && alive;  // a dead chain has nothing to invert
+    for (int iteration = 0; iteration < kInversionSteps; ++iteration) {
       ivec2 n = ivec2(floor(chained));
       inside = inside && onScreen(n);
       vec2 inverted = aheadPrevious - motionAt(clamp(n, ivec2(0), gSize - 1), layer);
+      bool converged = !inside || ivec2(floor(inverted)) == n;
       chained = inside ? inverted : chained;
+      if (converged) break;
     }
     ivec2 at = ivec2(floor(chained));
     ivec2 atClamped = clamp(at, ivec2(0), gSize - 1);
