@@ -45,7 +45,7 @@ constexpr int kTileSize = 32;
 // steps of a moving sample of t, a step a pixel at the yardstick's 320x180 and more in a larger
 // picture (nearMovingStride): a contact shadow's reach grows with the picture (docs/TUNING.md,
 // "The region test near moving objects": 8 px kept less of the shadow at 320x180; "Contact
-// shadows at 1080p": 16 px kept half of it).
+// shadows at 1080p": at 1080p 16 px gave 18.90 dB inside cycles_contact's shadow, 96 px 23.04).
 constexpr int kNearMovingRadius = 16;
 constexpr int kNearMovingReferenceSize = 180;  // the shorter side where a step is a pixel
 
