@@ -84,10 +84,9 @@ uniform float uColourTolerance;
 uniform float uDepthTolerance;
 uniform float uReconstructionWeight;
 // The region test (window_region_stats.frag): each ring layer's luma mean of its static
-// samples over the 6x6 around each 2x2 block and that mean's variance; a source two or more
-// frames away (near a moving object, t+-1 too) weighs its static samples by how well its mean
-// where the pixel's surface was agrees with t's own, softly from uRegionTolerance standard
-// errors, not at all from twice as many (0: no test).
+// samples over the 6x6 around each 2x2 block and that mean's variance; every source weighs its
+// static samples by how well its mean where the pixel's surface was agrees with t's own,
+// softly from uRegionTolerance standard errors, not at all from twice as many (0: no test).
 uniform float uRegionTolerance;
 uniform float uRegionToleranceNearMoving;
 uniform sampler2DArray uRegionStats;
@@ -99,9 +98,8 @@ vec2 gOwnRegion;
 uniform bool uOpaqueMoving;
 // From around each pixel of t (window_surroundings.frag): the thin search's nearest static
 // depth (--window-thin-search; none when off) and whether a moving sample is near, where the
-// region test takes uRegionToleranceNearMoving standard errors instead and tests t+-1 too: a
-// moving object's contact shadow moves with it (at 1080p far enough in a frame that t+-1 saw
-// lit floor where it is), and the floor's noise hides it from the looser test.
+// region test takes uRegionToleranceNearMoving standard errors instead: a moving object's
+// contact shadow moves with it, and the floor's noise hides it from the looser test.
 uniform bool uThinSearch;
 uniform sampler2D uSurroundings;
 // Each side of the window ends, per pixel, at the first source whose samples disagree with
@@ -664,15 +662,16 @@ void main() {
     cryptoSourceBegin();
 #endif
     if (uSourceHasCamera[k] != 0 && uTargetHasCamera) {
-      // Not at pixels with a moving sample (their surface is not where the cameras carry it),
-      // nor for t+-1 away from moving ones (always counted there, as by the tile test).
+      // Not at pixels with a moving sample (their surface is not where the cameras carry it).
+      // t+-1 too: at 1080p a moving light's highlight or a shadow's edge moves tens of pixels
+      // a frame, and t+-1's samples of it would draw it where it was (docs/TUNING.md, "The
+      // region test for t+-1").
       vec3 source = carried(fromTargetAlong, fromTargetOffset, gPosition, nearDepth);
       vec2 theirs = texelFetch(uRegionStats,
                                ivec3(clamp(ivec2(floor(0.5 * source.xy / source.z)), ivec2(0),
                                            (gSize - 1) / 2),
                                      layer), 0).xy;
-      bool tested = uRegionTolerance > 0.0 && !anyMoving &&
-                    (abs(offsetFrames) >= 2 || nearMoving) && theirs.y >= 0.0 &&
+      bool tested = uRegionTolerance > 0.0 && !anyMoving && theirs.y >= 0.0 &&
                     gOwnRegion.y >= 0.0;
       float limit = (nearMoving ? uRegionToleranceNearMoving : uRegionTolerance) *
                     sqrt(theirs.y + gOwnRegion.y) + kRegionFloor;

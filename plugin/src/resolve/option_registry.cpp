@@ -194,7 +194,7 @@ std::vector<Entry> makeEntries() {
   entries.push_back(windowNumberOption(
       {"window-region-tolerance", "Mode", "", "", "window mode: standard errors the luma mean "
        "of a frame's static samples over 6x6 pixels may stray from the resolved frame's own before "
-       "that frame (two or more away) is left out there: keeps contact and moving shadows "
+       "that frame is left out there: keeps contact and moving shadows "
        "(0: off; off with passes)"},
       0.0f, kNoLimit, &WindowOptions::regionTolerance));
   entries.push_back(windowNumberOption(
