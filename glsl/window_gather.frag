@@ -83,15 +83,28 @@ uniform float uSigma;
 uniform float uColourTolerance;
 uniform float uDepthTolerance;
 uniform float uReconstructionWeight;
-// The region test (window_region_stats.frag): each ring layer's luma mean of its static
-// samples over the 6x6 around each 2x2 block and that mean's variance; every source weighs its
-// static samples by how well its mean where the pixel's surface was agrees with t's own,
-// softly from uRegionTolerance standard errors, not at all from twice as many (0: no test).
+// The region test (window_region_stats.frag): each ring layer's plane fitted to the luma of its
+// static samples over the 6x6 around each 2x2 block, and its value's variance; every source
+// weighs its static samples by how well its plane's value where the pixel's surface was agrees
+// with t's own at the pixel, softly from uRegionTolerance standard errors, not at all from
+// twice as many (0: no test). Values at the exact points, not at the blocks' centres: a block
+// is centred up to a pixel away, a gradient's worth of difference.
 uniform float uRegionTolerance;
 uniform float uRegionToleranceNearMoving;
 uniform sampler2DArray uRegionStats;
 const float kRegionFloor = 0.0005;  // in decision luma: flat regions' means still differ a little
 vec2 gOwnRegion;
+// The region test's plane (window_region_stats.frag) of 2x2 block `block` of a layer whose
+// samples' jitter is `jitter`, at `position`: its value there and the variance of that value.
+vec2 regionAt(int layer, ivec2 block, vec2 position, vec2 jitter) {
+  vec4 stats = texelFetch(uRegionStats, ivec3(block, layer), 0);
+  vec2 away = position - (2.0 * vec2(block) + 1.0 + jitter);
+  // Away from the centre the slopes' own error adds to the value's (the fit's on the full 6x6,
+  // whose squared offsets along each axis sum to 105 / 36 a sample): without it, aliased
+  // texture's chance slopes reject frames (docs/TUNING.md, "A plane for the region test").
+  float spread = 1.0 + dot(away, away) / (105.0 / 36.0);
+  return vec2(stats.x + dot(stats.yz, away), stats.w >= 0.0 ? spread * stats.w : stats.w);
+}
 // A static sample never lands inside a moving object at t unless it is in front of it: where
 // the pixel's nearest surface moves, samples of the static surface behind it (a floor the
 // object stands on, at nearly the object's own depth where they touch) are rejected.
@@ -525,7 +538,7 @@ void main() {
       ownLumaSquares += w * y * y;
     }
   }
-  gOwnRegion = texelFetch(uRegionStats, ivec3(pixel / 2, uTargetLayer), 0).xy;
+  gOwnRegion = regionAt(uTargetLayer, pixel / 2, gPosition, uTargetJitter);
   gOwnDepthRow0 = vec3(signedDepths[0], signedDepths[1], signedDepths[2]);
   gOwnDepthRow1 = vec3(signedDepths[3], signedDepths[4], signedDepths[5]);
   gOwnDepthRow2 = vec3(signedDepths[6], signedDepths[7], signedDepths[8]);
@@ -667,10 +680,9 @@ void main() {
       // a frame, and t+-1's samples of it would draw it where it was (docs/TUNING.md, "The
       // region test for t+-1").
       vec3 source = carried(fromTargetAlong, fromTargetOffset, gPosition, nearDepth);
-      vec2 theirs = texelFetch(uRegionStats,
-                               ivec3(clamp(ivec2(floor(0.5 * source.xy / source.z)), ivec2(0),
-                                           (gSize - 1) / 2),
-                                     layer), 0).xy;
+      vec2 sourceAt = source.xy / source.z;
+      ivec2 sourceBlock = clamp(ivec2(floor(0.5 * sourceAt)), ivec2(0), (gSize - 1) / 2);
+      vec2 theirs = regionAt(layer, sourceBlock, sourceAt, jitter);
       bool tested = uRegionTolerance > 0.0 && !anyMoving && theirs.y >= 0.0 &&
                     gOwnRegion.y >= 0.0;
       float limit = (nearMoving ? uRegionToleranceNearMoving : uRegionTolerance) *

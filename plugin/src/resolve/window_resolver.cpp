@@ -142,7 +142,7 @@ struct WindowResolver::Impl {
   gl::TextureArray ring, ringMotion;
   std::vector<gl::Framebuffer> layerTargets;
   // The region test's statistics (window_region_stats.frag), a layer per ring layer, kept
-  // while the layer's classification stands (RG32F at a quarter of the pixels: 2 bytes a pixel
+  // while the layer's classification stands (RGBA32F at a quarter of the pixels: 4 bytes a pixel
   // a layer). None with passes: their rings take the memory (issue 21's bar).
   gl::TextureArray regionStats;
   std::vector<gl::Framebuffer> regionTargets;
@@ -346,7 +346,7 @@ struct WindowResolver::Impl {
     regionStats = gl::TextureArray();
     if (!regionTest() || width == 0) return;
     regionStats =
-        gl::TextureArray(gl, (width + 1) / 2, (height + 1) / 2, capacity() + 1, GL_RG32F);
+        gl::TextureArray(gl, (width + 1) / 2, (height + 1) / 2, capacity() + 1, GL_RGBA32F);
     for (int layer = 0; layer <= capacity(); ++layer) {
       regionTargets.emplace_back(gl, std::vector<gl::Attachment>{{regionStats, layer}});
     }
