@@ -637,8 +637,12 @@ void main() {
     vec2 tiles = vec2(textureSize(uTileReach, 0));
     reach = texture(uTileReach, gPosition / (float(uTileSize) * tiles)).rg;
   }
-  for (int k = 0; k < uSourceCount; ++k) {
-    if (!(behindOpen || aheadOpen)) break;
+  // The exit test at the loop's end, not its top: llvmpipe leaves a loop only at the end of an
+  // iteration in which every pixel of the group has broken, so a test at the top runs one more
+  // iteration, masked, for nothing (the gather 19 % faster without it: docs/PERFORMANCE.md,
+  // "Loops that end at the end").
+  int k = 0;
+  if (uSourceCount > 0) do {
     gSourceLayer = uSourceLayer[k];
     gSourceJitter = uSourceJitter[k];
     gToTargetAlong = uToTargetAlong[k];
@@ -691,8 +695,8 @@ void main() {
       // The near surface's block, then, where the pixel needs it, a second surface's: the
       // 3x3's far one, else a thin feature found in nearer frames (or in this block). A loop
       // rather than an if: llvmpipe runs an if's body for a whole group of pixels whether or
-      // not any of them takes it, but leaves a loop as soon as none of them goes on, so groups
-      // with one surface skip the second block.
+      // not any of them takes it, but leaves a loop after an iteration in which all of them
+      // broke, so groups with one surface skip the second block.
       ivec2 first = cornerTexel(source.xy / source.z, jitter);
       ivec2 corner = first;
       for (int surface = 0; surface < 2; ++surface) {
@@ -703,7 +707,8 @@ void main() {
         corner = cornerTexel(source.xy / source.z, jitter);
         // A second block that is the first (little parallax in the nearer frames) would add
         // nothing: its samples are all gathered already.
-        if (!(twoSurfaces || thin) || corner == first) break;
+        // The last iteration leaves here too, not by the counter's test at the top.
+        if (surface == 1 || !(twoSurfaces || thin) || corner == first) break;
       }
     }
 
@@ -725,7 +730,7 @@ void main() {
       vec2 inverted = aheadPrevious - motionAt(clamp(n, ivec2(0), gSize - 1), layer);
       bool converged = !inside || ivec2(floor(inverted)) == n;
       chained = inside ? inverted : chained;
-      if (converged) break;
+      if (converged || iteration == kInversionSteps - 1) break;  // (the last here too)
     }
     ivec2 at = ivec2(floor(chained));
     ivec2 atClamped = clamp(at, ivec2(0), gSize - 1);
@@ -781,7 +786,8 @@ void main() {
     bool settled = settling && agreeingSources >= uSettleSources;
     behindOpen = behindOpen && !settled;
     aheadOpen = aheadOpen && !settled;
-  }
+    ++k;
+  } while (k < uSourceCount && (behindOpen || aheadOpen));
 
 #if TILE_STATS
   outStats[0] = vec4(gStatsWords[0]);

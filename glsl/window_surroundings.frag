@@ -42,8 +42,11 @@ void main() {
   ivec2 size = textureSize(uRows, 0);
   ivec2 step = ivec2(0, 1);
 #endif
+  // Loops whose test comes at the end: llvmpipe runs an iteration that a test at the top
+  // breaks to its end, masked (window_gather.frag). Both run at least once (radii >= 0).
   float nearest = 1.0 / 0.0;
-  for (int d = -uRadius; d <= uRadius; ++d) {
+  int d = -uRadius;
+  do {
     ivec2 n = clamp(pixel + d * step, ivec2(0), size - 1);  // edges repeat, as in the gather
 #if FROM_RING
     float depth = ringDepth(texelFetch(uRing, ivec3(n, uLayer), 0));
@@ -51,16 +54,19 @@ void main() {
     float depth = texelFetch(uRows, n, 0).r;
 #endif
     nearest = depth >= 0.0 ? min(nearest, depth) : nearest;  // static samples only
-  }
+    ++d;
+  } while (d <= uRadius);
   float moving = 0.0;
   int steps = uMovingRadius / uMovingStride;
-  for (int m = -steps; m <= steps; ++m) {
+  int m = -steps;
+  do {
     ivec2 n = clamp(pixel + m * uMovingStride * step, ivec2(0), size - 1);
 #if FROM_RING
     moving = max(moving, ringDepth(texelFetch(uRing, ivec3(n, uLayer), 0)) < 0.0 ? 1.0 : 0.0);
 #else
     moving = max(moving, texelFetch(uRows, n, 0).g);
 #endif
-  }
+    ++m;
+  } while (m <= steps);
   outSurroundings = vec2(nearest, moving);
 }

@@ -17,11 +17,14 @@
 #   5. "ksweep": the window mode on the same render for K = 1, 2, 4, 8, 12 (docs/QUALITY.md,
 #      "Window K sweep"), not run by default;
 #   6. "floor": issue 23's speed floor on the same render, not run by default: ROUNDS (default
-#      2) rounds, one after another, of the K 4 window with every later addition off (the
-#      reference the floor was set against: 0.8 frames/s on 2026-11-26's machine), `--window 4`,
-#      the default and `--window 0` (t's own samples: what a run pays at any K), each the whole
-#      24-frame shot; the medians, each against the reference's, and the floor as this machine
-#      would have it (2 s a frame where the reference took 1.25).
+#      2) rounds, one after another, of the reference the floor was set against (taatool as it
+#      was when the issue was filed, commit 520be91, at its default K 4 window: 0.8 frames/s on
+#      2026-11-26's machine; built once from the repository's history into
+#      ~/.cache/taa/reference-520be91, so a shallow clone cannot run this part), today's K 4
+#      window with every later addition off, `--window 4`, the default and `--window 0` (t's
+#      own samples: what a run pays at any K), each the whole 24-frame shot; the medians, each
+#      against the reference's, and the floor as this machine would have it (2 s a frame where
+#      the reference took 1.25, and `--window 4` no slower than the reference).
 # Uses Debian's /usr/bin/time, oiiotool (openimageio-tools) and blender. Environment: SIZE,
 # FRAMES, COMPRESSIONS (default "zip piz none"), PARTS ("speed memory blender" by default; any).
 set -euo pipefail
@@ -166,11 +169,29 @@ if [[ " $parts " == *" ksweep "* ]]; then
 fi
 if [[ " $parts " == *" floor "* ]]; then
   rounds="${ROUNDS:-2}"
-  reference_flags="--window 4 --window-near 0 --window-falloff 0 --window-moving 0"
-  reference_flags+=" --window-region-tolerance 0 --window-thin-search 0 --window-strata off"
-  reference_flags+=" --window-settle 0"
-  names=(reference window-4 default window-0)
-  flags=("$reference_flags" "--window 4" "" "--window 0")
+  # The build the floor was set against, from the repository's own history.
+  reference_commit=520be91
+  reference_dir="${TAA_REFERENCE_DIR:-$HOME/.cache/taa/reference-$reference_commit}"
+  reference_taatool="$reference_dir/build/bin/taatool"
+  if [ ! -x "$reference_taatool" ]; then
+    if ! git -C "$root" cat-file -e "$reference_commit^{commit}" 2>/dev/null; then
+      echo "benchmark.sh: floor: commit $reference_commit (the floor's reference) is not in" \
+        "$root's history (a shallow clone?): fetch it, or set TAA_REFERENCE_DIR" >&2
+      exit 1
+    fi
+    rm -rf "$reference_dir/src" && mkdir -p "$reference_dir/src"
+    git -C "$root" archive "$reference_commit" | tar -x -C "$reference_dir/src"
+    cmake -S "$reference_dir/src" -B "$reference_dir/build" \
+      -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
+    cmake --build "$reference_dir/build" -j"$(nproc)" --target taatool >/dev/null
+  fi
+  bare_flags="--window 4 --window-near 0 --window-falloff 0 --window-moving 0"
+  bare_flags+=" --window-region-tolerance 0 --window-thin-search 0 --window-strata off"
+  bare_flags+=" --window-settle 0"
+  names=(reference k4-bare window-4 default window-0)
+  programs=("$reference_taatool" "$taatool" "$taatool" "$taatool" "$taatool")
+  flags=("--camera-sidecar $render/camera.json --mode window" "$bare_flags" "--window 4" ""
+    "--window 0")
   echo "Blender Cycles render (cycles_fence), 1920x1080, 24 frames: issue 23's floor, $rounds rounds"
   printf "%-10s %5s %8s %8s %10s\n" run round "wall s" "CPU s" "peak MiB"
   declare -A walls=()
@@ -178,8 +199,8 @@ if [[ " $parts " == *" floor "* ]]; then
     for i in "${!names[@]}"; do
       rm -rf "$work/out"
       # shellcheck disable=SC2086  # the flags are words
-      read -r s kib cpu < <(measure "$taatool" -q "$render/input.####.exr" --preset cycles \
-        --frames 1-24 --compression zip -o "$work/out/r.####.exr" ${flags[$i]})
+      read -r s kib cpu < <(measure "${programs[$i]}" -q "$render/input.####.exr" \
+        --preset cycles --frames 1-24 --compression zip -o "$work/out/r.####.exr" ${flags[$i]})
       printf "%-10s %5d %8.2f %8.2f %10d\n" "${names[$i]}" "$round" "$s" "$cpu" "$((kib / 1024))"
       walls[${names[$i]}]+="$s "
     done
@@ -195,7 +216,7 @@ if [[ " $parts " == *" floor "* ]]; then
       printf "%-10s median %7.2f s, %5.2f s a frame, %4.2fx the reference\n", n, m, m / 24, m / r }'
   done
   awk -v r="$reference" 'BEGIN {
-    printf "the floor here: %.2f s a frame (1.6x the reference); --window 4 at most %.2f\n",
+    printf "the floor here: the default at most %.2f s a frame (1.6x the reference); --window 4 at most %.2f\n",
       1.6 * r / 24, r / 24 }'
 fi
 rm -rf "$work/out" "$work/io"
