@@ -457,6 +457,179 @@ void addMovingBlock(vec2 chained, bool alive) {
   addMovingSample(corner, ivec2(1, 1), chained, alive);
 }
 
+// What the source loop reads of the pixel, set once by main(), and what it carries from one
+// source to the next.
+bool gAnyMoving;   // t's 3x3 has a moving sample
+bool gNearMoving;  // a moving sample of t is near (the region test's stricter tolerance)
+bool gTwoSurfaces;
+float gSplit, gNearDepth, gFarDepth;
+float gOwnLuma, gOwnWeight;
+vec4 gOwnMean, gSettleTolerance;
+vec2 gReach;                   // the tile test's reach behind and ahead, in frames
+bool gBehindOpen, gAheadOpen;  // uAdaptive: each side until a source disagrees
+bool gSettling;
+int gAgreeingSources;
+// The luma variance within frames (texture and aliasing inside the footprint, not change
+// between frames), pooled over t's own samples and each source weighed so far: the noise a
+// source's mean is tested against.
+float gWithin, gWithinWeight;
+#if CHAINS
+// Chains of the pixel's moving surface: where it is in the frame behind (t-1, t-2, ...) and
+// ahead (t+1, ...) of the one processed last.
+vec2 gBehind, gAheadPrevious, gVelocity;
+bool gBehindAlive, gAheadAlive;
+#endif
+
+// Source k's samples into the pixel's sums; with `withChains` (a constant: the code is left
+// out without it) its moving samples too, along the pixel's chains.
+void gatherSource(int k, bool withChains) {
+  gSourceLayer = uSourceLayer[k];
+  gSourceJitter = uSourceJitter[k];
+  gToTargetAlong = uToTargetAlong[k];
+  gToTargetOffset = uToTargetOffset[k];
+  gToTargetDepthAlong = uToTargetDepthAlong[k];
+  gToTargetDepthOffset = uToTargetDepthOffset[k];
+  mat3 fromTargetAlong = uFromTargetAlong[k];
+  mat3 fromTargetOffset = uFromTargetOffset[k];
+  int offsetFrames = uSourceOffset[k];
+  int layer = gSourceLayer;
+  vec2 jitter = gSourceJitter;
+  // A side ends beyond its reach (the loop ends with both).
+  float framesAway = float(abs(offsetFrames));
+  float inReach = clamp((offsetFrames < 0 ? gReach.x : gReach.y) - framesAway + 1.0, 0.0, 1.0);
+  inReach = gAnyMoving && uMovingRadius > 0 && framesAway > float(uMovingRadius) ? 0.0 : inReach;
+  gBehindOpen = gBehindOpen && !(offsetFrames < 0 && inReach <= 0.0);
+  gAheadOpen = gAheadOpen && !(offsetFrames > 0 && inReach <= 0.0);
+  bool open = offsetFrames < 0 ? gBehindOpen : gAheadOpen;
+  float frameWeight = open ? uSourceWeight[k] * inReach : 0.0;
+  gSourceWeight = 0.0;
+  gSourceSum = vec4(0.0);
+#if STRATA
+  gSourceQuadrants = kNoQuadrants;
+#endif
+  gSourceLumaSum = 0.0;
+  gSourceLumaSquares = 0.0;
+#if PASS_GROUPS > 0 || CRYPTOMATTE
+  gSourcePassLayer = uSourcePassLayer[k];
+#endif
+#if PASS_GROUPS > 0
+  for (int g = 0; g < PASS_GROUPS; ++g) gSourcePassSum[g] = vec4(0.0);
+#endif
+#if CRYPTOMATTE
+  cryptoSourceBegin();
+#endif
+  if (uSourceHasCamera[k] != 0 && uTargetHasCamera) {
+    // Not at pixels with a moving sample (their surface is not where the cameras carry it).
+    // t+-1 too: at 1080p a moving light's highlight or a shadow's edge moves tens of pixels
+    // a frame, and t+-1's samples of it would draw it where it was (docs/TUNING.md, "The
+    // region test for t+-1").
+    vec3 source = carried(fromTargetAlong, fromTargetOffset, gPosition, gNearDepth);
+    vec2 sourceAt = source.xy / source.z;
+    ivec2 sourceBlock = clamp(ivec2(floor(0.5 * sourceAt)), ivec2(0), (gSize - 1) / 2);
+    vec2 theirs = regionAt(layer, sourceBlock, sourceAt, jitter);
+    bool tested = uRegionTolerance > 0.0 && !gAnyMoving && theirs.y >= 0.0 &&
+                  gOwnRegion.y >= 0.0;
+    float limit = (gNearMoving ? uRegionToleranceNearMoving : uRegionTolerance) *
+                  sqrt(theirs.y + gOwnRegion.y) + kRegionFloor;
+    frameWeight *= tested ? clamp(2.0 - abs(theirs.x - gOwnRegion.x) / limit, 0.0, 1.0) : 1.0;
+    // The near surface's block, then, where the pixel needs it, a second surface's: the
+    // 3x3's far one, else a thin feature found in nearer frames (or in this block). A loop
+    // rather than an if: llvmpipe runs an if's body for a whole group of pixels whether or
+    // not any of them takes it, but leaves a loop after an iteration in which all of them
+    // broke, so groups with one surface skip the second block.
+    ivec2 first = cornerTexel(source.xy / source.z, jitter);
+    ivec2 corner = first;
+    for (int surface = 0; surface < 2; ++surface) {
+      addStaticBlock(corner, surface == 1, first, frameWeight);
+      bool thin = gThinDepth < gNearDepth * (1.0 - gSplit);
+      source = carried(fromTargetAlong, fromTargetOffset, gPosition,
+                       gTwoSurfaces ? gFarDepth : gThinDepth);
+      corner = cornerTexel(source.xy / source.z, jitter);
+      // A second block that is the first (little parallax in the nearer frames) would add
+      // nothing: its samples are all gathered already.
+      // The last iteration leaves here too, not by the counter's test at the top.
+      if (surface == 1 || !(gTwoSurfaces || thin) || corner == first) break;
+    }
+  }
+
+#if CHAINS
+  if (withChains) {
+    // Straight-line code with selects (llvmpipe runs every branch anyway, masked): the chain of
+    // this step's direction moves on one frame while it stays on moving samples.
+    bool behindStep = offsetFrames < 0;
+    bool alive = behindStep ? gBehindAlive : gAheadAlive;
+    // Ahead: invert the next frame's vectors, q with q + motion(q) = the position one frame
+    // before, from the last step's velocity, by fixed-point steps while on screen, until a step
+    // lands in the texel it read (the next would change nothing), kInversionSteps at most. Two
+    // steps were enough for a slide; a tumbling cube at 1080p (60 px a frame) needs more
+    // (docs/TUNING.md, "Chains ahead at 1080p").
+    vec2 chained = behindStep ? gBehind : gAheadPrevious + gVelocity;
+    bool inside = !behindStep && alive;  // a dead chain has nothing to invert
+    for (int iteration = 0; iteration < kInversionSteps; ++iteration) {
+      ivec2 n = ivec2(floor(chained));
+      inside = inside && onScreen(n);
+      vec2 inverted = gAheadPrevious - motionAt(clamp(n, ivec2(0), gSize - 1), layer);
+      bool converged = !inside || ivec2(floor(inverted)) == n;
+      chained = inside ? inverted : chained;
+      if (converged || iteration == kInversionSteps - 1) break;  // (the last here too)
+    }
+    ivec2 at = ivec2(floor(chained));
+    ivec2 atClamped = clamp(at, ivec2(0), gSize - 1);
+    // The chain ends off screen, or where the frame sees something static: the moving surface
+    // is not there (hidden, or gone).
+    bool continues = alive && onScreen(at) &&
+                     ringDepth(texelFetch(uRing, ivec3(atClamped, layer), 0)) < 0.0;
+    addMovingBlock(chained, continues);
+    vec2 atMotion = motionAt(atClamped, layer);
+    gBehind = behindStep && continues ? chained + atMotion : gBehind;
+    gVelocity = !behindStep && continues ? chained - gAheadPrevious : gVelocity;
+    gAheadPrevious = !behindStep && continues ? chained : gAheadPrevious;
+    gBehindAlive = behindStep ? continues : gBehindAlive;
+    gAheadAlive = behindStep ? gAheadAlive : continues;
+  }
+#endif
+
+  // The source weighed whole: how well its samples' mean agrees with t's own.
+  if (open && gSourceWeight > 0.0) {
+    float mean = gSourceLumaSum / gSourceWeight;
+    float agreement = agreementWeight(mean - gOwnLuma, max(gWithin / gWithinWeight, 0.0),
+                                      gSourceWeight, gOwnWeight, gOwnLuma, uColourTolerance);
+    // Adaptive: a side whose source disagrees is closed for the farther frames.
+    bool closes = uAdaptive && agreement < 0.5;
+#if TILE_STATS
+    uint code = uint(64.0 + clamp(round(256.0 * (mean - gOwnLuma)), -63.0, 63.0)) |
+                (agreement < 0.5 ? 128u : 0u);
+    addStatsCode(k, code);
+#endif
+    gBehindOpen = gBehindOpen && !(closes && offsetFrames < 0);
+    gAheadOpen = gAheadOpen && !(closes && offsetFrames > 0);
+    gSum += agreement * frameWeight * gSourceSum;
+#if STRATA
+    addQuadrants(gQuadrants, gSourceQuadrants, agreement * frameWeight);
+#endif
+#if PASS_GROUPS > 0
+    for (int g = 0; g < PASS_GROUPS; ++g) {
+      gPassSum[g] += agreement * frameWeight * gSourcePassSum[g];
+    }
+#endif
+#if CRYPTOMATTE
+    cryptoSourceEnd(agreement * frameWeight);
+#endif
+    gWeight += agreement * frameWeight * gSourceWeight;
+    gDisagreeing += (1.0 - agreement) * gSourceWeight;
+    gWithin += gSourceLumaSquares - gSourceWeight * mean * mean;
+    gWithinWeight += gSourceWeight;
+    gSettling = gSettling && all(lessThanEqual(abs(gSourceSum / gSourceWeight - gOwnMean),
+                                               gSettleTolerance));
+    gAgreeingSources += 1;
+  }
+  // A thin feature carried in (gThinDepth) unsettles the pixel.
+  gSettling = gSettling && isinf(gThinDepth);
+  bool settled = gSettling && gAgreeingSources >= uSettleSources;
+  gBehindOpen = gBehindOpen && !settled;
+  gAheadOpen = gAheadOpen && !settled;
+}
+
 void main() {
 #if TILE_STATS
   ivec2 pixel = ivec2(gl_FragCoord.xy) * uStatsStride + uStatsStride / 2;
@@ -602,192 +775,67 @@ void main() {
   gThinDepth = gThinDepth < gNearest * (1.0 - split) ? gThinDepth : 1.0 / 0.0;
   float farDepth = farCount > 0.0 ? farSum / farCount : gFarthest;
 
+  gAnyMoving = anyMoving;
+  gNearMoving = nearMoving;
+  gTwoSurfaces = twoSurfaces;
+  gSplit = split;
+  gNearDepth = nearDepth;
+  gFarDepth = farDepth;
+
   // Settling: one flat surface, nothing thin or moving near, t's 3x3 within the tolerance.
-  vec4 ownMean = ownSum / ownWeight;
-  vec4 settleTolerance =
-      uSettle * vec4(vec3(max(max(abs(ownMean.r), abs(ownMean.g)), max(abs(ownMean.b), 1e-3))),
-                     1.0);
-  bool settling = TILE_STATS == 0 && uSettle > 0.0 && !twoSurfaces && isinf(gThinDepth) &&
-                  !anyMoving && !nearMoving &&
-                  all(lessThanEqual(vec4(rgbMax - rgbMin, alphaMax - alphaMin),
-                                    settleTolerance));
-  int agreeingSources = 0;
+  gOwnMean = ownSum / ownWeight;
+  gSettleTolerance = uSettle * vec4(vec3(max(max(abs(gOwnMean.r), abs(gOwnMean.g)),
+                                             max(abs(gOwnMean.b), 1e-3))),
+                                    1.0);
+  gSettling = TILE_STATS == 0 && uSettle > 0.0 && !twoSurfaces && isinf(gThinDepth) &&
+              !anyMoving && !nearMoving &&
+              all(lessThanEqual(vec4(rgbMax - rgbMin, alphaMax - alphaMin), gSettleTolerance));
+  gAgreeingSources = 0;
 
 #if CHAINS
-  // Chains of the pixel's moving surface: where it is in the frame behind (t-1, t-2, ...) and
-  // ahead (t+1, ...) of the one processed last.
   vec2 startMotion = anyMoving ? motionAt(movingAt, uTargetLayer) : vec2(0.0);
-  vec2 behind = gPosition + startMotion;  // in t-1
-  vec2 aheadPrevious = gPosition;         // in t (the chain ahead inverts each next frame)
-  vec2 velocity = -startMotion;           // first guess of each step ahead
-  bool behindAlive = anyMoving;
-  bool aheadAlive = anyMoving;
+  gBehind = gPosition + startMotion;  // in t-1
+  gAheadPrevious = gPosition;         // in t (the chain ahead inverts each next frame)
+  gVelocity = -startMotion;           // first guess of each step ahead
+  gBehindAlive = anyMoving;
+  gAheadAlive = anyMoving;
 #endif
 
-  // The luma variance within frames (texture and aliasing inside the footprint, not change
-  // between frames), pooled over t's own samples and each source weighed so far: the noise a
-  // source's mean is tested against.
-  float ownLuma = ownLumaSum / ownWeight;
-  float within = ownLumaSquares - ownWeight * ownLuma * ownLuma;
-  float withinWeight = ownWeight;
+  gOwnWeight = ownWeight;
+  gOwnLuma = ownLumaSum / ownWeight;
+  gWithin = ownLumaSquares - ownWeight * gOwnLuma * gOwnLuma;
+  gWithinWeight = ownWeight;
 
-  bool behindOpen = true, aheadOpen = true;  // uAdaptive: each side until a source disagrees
-  vec2 reach = vec2(1e9);
+  gBehindOpen = true;
+  gAheadOpen = true;
+  gReach = vec2(1e9);
   if (uTiles) {
     vec2 tiles = vec2(textureSize(uTileReach, 0));
-    reach = texture(uTileReach, gPosition / (float(uTileSize) * tiles)).rg;
+    gReach = texture(uTileReach, gPosition / (float(uTileSize) * tiles)).rg;
   }
-  // The exit test at the loop's end, not its top: llvmpipe leaves a loop only at the end of an
-  // iteration in which every pixel of the group has broken, so a test at the top runs one more
-  // iteration, masked, for nothing (the gather 19 % faster without it: docs/PERFORMANCE.md,
-  // "Loops that end at the end").
+  // Two loops over the sources, each with its exit test at the end, not the top: llvmpipe
+  // leaves a loop only at the end of an iteration in which every pixel of the group has
+  // broken, so a test at the top runs one more iteration, masked, for nothing (the gather 19 %
+  // faster without it: docs/PERFORMANCE.md, "Loops that end at the end"). Pixels with a moving
+  // sample in their 3x3 take the one with the chains, the others the one without: llvmpipe
+  // runs both branches of the if, masked, but a loop no pixel of the group is in stops after
+  // its first iteration, so a group of static pixels no longer runs the chains' code for
+  // every source (docs/PERFORMANCE.md, "The chains' own loop").
   int k = 0;
-  if (uSourceCount > 0) do {
-    gSourceLayer = uSourceLayer[k];
-    gSourceJitter = uSourceJitter[k];
-    gToTargetAlong = uToTargetAlong[k];
-    gToTargetOffset = uToTargetOffset[k];
-    gToTargetDepthAlong = uToTargetDepthAlong[k];
-    gToTargetDepthOffset = uToTargetDepthOffset[k];
-    mat3 fromTargetAlong = uFromTargetAlong[k];
-    mat3 fromTargetOffset = uFromTargetOffset[k];
-    int offsetFrames = uSourceOffset[k];
-    int layer = gSourceLayer;
-    vec2 jitter = gSourceJitter;
-    // A side ends beyond its reach (the loop ends with both).
-    float framesAway = float(abs(offsetFrames));
-    float inReach = clamp((offsetFrames < 0 ? reach.x : reach.y) - framesAway + 1.0, 0.0, 1.0);
-    inReach = anyMoving && uMovingRadius > 0 && framesAway > float(uMovingRadius) ? 0.0 : inReach;
-    behindOpen = behindOpen && !(offsetFrames < 0 && inReach <= 0.0);
-    aheadOpen = aheadOpen && !(offsetFrames > 0 && inReach <= 0.0);
-    bool open = offsetFrames < 0 ? behindOpen : aheadOpen;
-    float frameWeight = open ? uSourceWeight[k] * inReach : 0.0;
-    gSourceWeight = 0.0;
-    gSourceSum = vec4(0.0);
-#if STRATA
-    gSourceQuadrants = kNoQuadrants;
-#endif
-    gSourceLumaSum = 0.0;
-    gSourceLumaSquares = 0.0;
-#if PASS_GROUPS > 0 || CRYPTOMATTE
-    gSourcePassLayer = uSourcePassLayer[k];
-#endif
-#if PASS_GROUPS > 0
-    for (int g = 0; g < PASS_GROUPS; ++g) gSourcePassSum[g] = vec4(0.0);
-#endif
-#if CRYPTOMATTE
-    cryptoSourceBegin();
-#endif
-    if (uSourceHasCamera[k] != 0 && uTargetHasCamera) {
-      // Not at pixels with a moving sample (their surface is not where the cameras carry it).
-      // t+-1 too: at 1080p a moving light's highlight or a shadow's edge moves tens of pixels
-      // a frame, and t+-1's samples of it would draw it where it was (docs/TUNING.md, "The
-      // region test for t+-1").
-      vec3 source = carried(fromTargetAlong, fromTargetOffset, gPosition, nearDepth);
-      vec2 sourceAt = source.xy / source.z;
-      ivec2 sourceBlock = clamp(ivec2(floor(0.5 * sourceAt)), ivec2(0), (gSize - 1) / 2);
-      vec2 theirs = regionAt(layer, sourceBlock, sourceAt, jitter);
-      bool tested = uRegionTolerance > 0.0 && !anyMoving && theirs.y >= 0.0 &&
-                    gOwnRegion.y >= 0.0;
-      float limit = (nearMoving ? uRegionToleranceNearMoving : uRegionTolerance) *
-                    sqrt(theirs.y + gOwnRegion.y) + kRegionFloor;
-      frameWeight *= tested ? clamp(2.0 - abs(theirs.x - gOwnRegion.x) / limit, 0.0, 1.0) : 1.0;
-      // The near surface's block, then, where the pixel needs it, a second surface's: the
-      // 3x3's far one, else a thin feature found in nearer frames (or in this block). A loop
-      // rather than an if: llvmpipe runs an if's body for a whole group of pixels whether or
-      // not any of them takes it, but leaves a loop after an iteration in which all of them
-      // broke, so groups with one surface skip the second block.
-      ivec2 first = cornerTexel(source.xy / source.z, jitter);
-      ivec2 corner = first;
-      for (int surface = 0; surface < 2; ++surface) {
-        addStaticBlock(corner, surface == 1, first, frameWeight);
-        bool thin = gThinDepth < nearDepth * (1.0 - split);
-        source = carried(fromTargetAlong, fromTargetOffset, gPosition,
-                         twoSurfaces ? farDepth : gThinDepth);
-        corner = cornerTexel(source.xy / source.z, jitter);
-        // A second block that is the first (little parallax in the nearer frames) would add
-        // nothing: its samples are all gathered already.
-        // The last iteration leaves here too, not by the counter's test at the top.
-        if (surface == 1 || !(twoSurfaces || thin) || corner == first) break;
-      }
-    }
-
 #if CHAINS
-    // Straight-line code with selects (llvmpipe runs every branch anyway, masked): the chain of
-    // this step's direction moves on one frame while it stays on moving samples.
-    bool behindStep = offsetFrames < 0;
-    bool alive = behindStep ? behindAlive : aheadAlive;
-    // Ahead: invert the next frame's vectors, q with q + motion(q) = the position one frame
-    // before, from the last step's velocity, by fixed-point steps while on screen, until a step
-    // lands in the texel it read (the next would change nothing), kInversionSteps at most. Two
-    // steps were enough for a slide; a tumbling cube at 1080p (60 px a frame) needs more
-    // (docs/TUNING.md, "Chains ahead at 1080p").
-    vec2 chained = behindStep ? behind : aheadPrevious + velocity;
-    bool inside = !behindStep && alive;  // a dead chain has nothing to invert
-    for (int iteration = 0; iteration < kInversionSteps; ++iteration) {
-      ivec2 n = ivec2(floor(chained));
-      inside = inside && onScreen(n);
-      vec2 inverted = aheadPrevious - motionAt(clamp(n, ivec2(0), gSize - 1), layer);
-      bool converged = !inside || ivec2(floor(inverted)) == n;
-      chained = inside ? inverted : chained;
-      if (converged || iteration == kInversionSteps - 1) break;  // (the last here too)
-    }
-    ivec2 at = ivec2(floor(chained));
-    ivec2 atClamped = clamp(at, ivec2(0), gSize - 1);
-    // The chain ends off screen, or where the frame sees something static: the moving surface
-    // is not there (hidden, or gone).
-    bool continues = alive && onScreen(at) &&
-                     ringDepth(texelFetch(uRing, ivec3(atClamped, layer), 0)) < 0.0;
-    addMovingBlock(chained, continues);
-    vec2 atMotion = motionAt(atClamped, layer);
-    behind = behindStep && continues ? chained + atMotion : behind;
-    velocity = !behindStep && continues ? chained - aheadPrevious : velocity;
-    aheadPrevious = !behindStep && continues ? chained : aheadPrevious;
-    behindAlive = behindStep ? continues : behindAlive;
-    aheadAlive = behindStep ? aheadAlive : continues;
+  if (anyMoving) {
+    if (uSourceCount > 0) do {
+      gatherSource(k, true);
+      ++k;
+    } while (k < uSourceCount && (gBehindOpen || gAheadOpen));
+  } else
 #endif
-
-    // The source weighed whole: how well its samples' mean agrees with t's own.
-    if (open && gSourceWeight > 0.0) {
-      float mean = gSourceLumaSum / gSourceWeight;
-      float agreement = agreementWeight(mean - ownLuma, max(within / withinWeight, 0.0),
-                                        gSourceWeight, ownWeight, ownLuma, uColourTolerance);
-      // Adaptive: a side whose source disagrees is closed for the farther frames.
-      bool closes = uAdaptive && agreement < 0.5;
-#if TILE_STATS
-      uint code = uint(64.0 + clamp(round(256.0 * (mean - ownLuma)), -63.0, 63.0)) |
-                  (agreement < 0.5 ? 128u : 0u);
-      addStatsCode(k, code);
-#endif
-      behindOpen = behindOpen && !(closes && offsetFrames < 0);
-      aheadOpen = aheadOpen && !(closes && offsetFrames > 0);
-      gSum += agreement * frameWeight * gSourceSum;
-#if STRATA
-      addQuadrants(gQuadrants, gSourceQuadrants, agreement * frameWeight);
-#endif
-#if PASS_GROUPS > 0
-      for (int g = 0; g < PASS_GROUPS; ++g) {
-        gPassSum[g] += agreement * frameWeight * gSourcePassSum[g];
-      }
-#endif
-#if CRYPTOMATTE
-      cryptoSourceEnd(agreement * frameWeight);
-#endif
-      gWeight += agreement * frameWeight * gSourceWeight;
-      gDisagreeing += (1.0 - agreement) * gSourceWeight;
-      within += gSourceLumaSquares - gSourceWeight * mean * mean;
-      withinWeight += gSourceWeight;
-      settling = settling && all(lessThanEqual(abs(gSourceSum / gSourceWeight - ownMean),
-                                               settleTolerance));
-      agreeingSources += 1;
-    }
-    // A thin feature carried in (gThinDepth) unsettles the pixel.
-    settling = settling && isinf(gThinDepth);
-    bool settled = settling && agreeingSources >= uSettleSources;
-    behindOpen = behindOpen && !settled;
-    aheadOpen = aheadOpen && !settled;
-    ++k;
-  } while (k < uSourceCount && (behindOpen || aheadOpen));
+  {
+    if (uSourceCount > 0) do {
+      gatherSource(k, false);
+      ++k;
+    } while (k < uSourceCount && (gBehindOpen || gAheadOpen));
+  }
 
 #if TILE_STATS
   outStats[0] = vec4(gStatsWords[0]);
