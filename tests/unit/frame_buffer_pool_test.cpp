@@ -42,6 +42,22 @@ TEST_F(FrameBufferPoolTest, ReleaseGivesTheKeptBuffersBack) {
   EXPECT_EQ(keptFrameBufferBytes(), 0u);
 }
 
+TEST_F(FrameBufferPoolTest, NothingIsKeptWhileFrameBuffersNotKeptLives) {
+  void* before = takeFrameBuffer(kFrameBytes);
+  giveBackFrameBuffer(before, kFrameBytes);
+  ASSERT_EQ(keptFrameBufferBytes(), kFrameBytes);
+  {
+    FrameBuffersNotKept notKept;
+    EXPECT_EQ(keptFrameBufferBytes(), 0u);  // what was kept is freed at once
+    void* during = takeFrameBuffer(kFrameBytes);
+    giveBackFrameBuffer(during, kFrameBytes);
+    EXPECT_EQ(keptFrameBufferBytes(), 0u);
+  }
+  void* after = takeFrameBuffer(kFrameBytes);
+  giveBackFrameBuffer(after, kFrameBytes);
+  EXPECT_EQ(keptFrameBufferBytes(), kFrameBytes);  // kept again once it is gone
+}
+
 TEST_F(FrameBufferPoolTest, SmallBuffersAreNotKept) {
   void* small = takeFrameBuffer(4096);
   giveBackFrameBuffer(small, 4096);

@@ -44,7 +44,8 @@ class Pool {
       std::lock_guard<std::mutex> lock(mutex_);
       kept_.push_back({buffer, bytes});
       keptBytes_ += bytes;
-      while (kept_.size() > kMaxKeptBuffers || keptBytes_ > kMaxKeptBytes) {
+      const std::size_t maxBytes = notKept_ > 0 ? 0 : kMaxKeptBytes;
+      while (kept_.size() > kMaxKeptBuffers || keptBytes_ > maxBytes) {
         evicted.push_back(kept_.front());
         keptBytes_ -= kept_.front().bytes;
         kept_.pop_front();
@@ -68,12 +69,21 @@ class Pool {
     return keptBytes_;
   }
 
+  void keepNone(bool on) {
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      notKept_ += on ? 1 : -1;
+    }
+    if (on) release();
+  }
+
   ~Pool() { release(); }
 
  private:
   std::mutex mutex_;
   std::deque<KeptBuffer> kept_;  // oldest first
   std::size_t keptBytes_ = 0;
+  int notKept_ = 0;  // FrameBuffersNotKept alive
 };
 
 Pool& pool() {
@@ -99,5 +109,8 @@ void giveBackFrameBuffer(void* buffer, std::size_t bytes) {
 void releaseFrameBuffers() { pool().release(); }
 
 std::size_t keptFrameBufferBytes() { return pool().keptBytes(); }
+
+FrameBuffersNotKept::FrameBuffersNotKept() { pool().keepNone(true); }
+FrameBuffersNotKept::~FrameBuffersNotKept() { pool().keepNone(false); }
 
 }  // namespace taa

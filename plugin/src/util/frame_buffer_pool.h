@@ -22,6 +22,17 @@ void releaseFrameBuffers();
 // Bytes the pool keeps now (freed, not yet handed out again).
 std::size_t keptFrameBufferBytes();
 
+// While one lives, the pool keeps no freed buffer (those it keeps are freed at once): for a run
+// whose peak memory is its bar, where idle buffers cost more than their page faults (a window
+// resolve with every pass: docs/PERFORMANCE.md, "Every pass and the pool"). Nested ones count.
+class FrameBuffersNotKept {
+ public:
+  FrameBuffersNotKept();
+  ~FrameBuffersNotKept();
+  FrameBuffersNotKept(const FrameBuffersNotKept&) = delete;
+  FrameBuffersNotKept& operator=(const FrameBuffersNotKept&) = delete;
+};
+
 // The pool as a standard allocator, for the vectors that hold frames (util/image.h).
 template <typename T>
 struct FrameBufferAllocator {
