@@ -51,6 +51,9 @@
 #ifndef CHAINS
 #define CHAINS 1  // 0: no frame of the window has moving samples; the chains' code is left out
 #endif            // (llvmpipe would run it, masked, for every pixel)
+#ifndef STATIC_SAMPLES
+#define STATIC_SAMPLES 1  // 0: the resolved frame has no camera (vectors only): no sample is
+#endif                    // carried by the cameras, and that code is left out
 const int kInversionSteps = 4;  // the most fixed-point steps of a chain ahead (see the chains)
 
 uniform usampler2DArray uRing;  // each frame's jittered samples (window_ring.glsl)
@@ -518,6 +521,7 @@ void gatherSource(int k, bool withChains) {
 #if CRYPTOMATTE
   cryptoSourceBegin();
 #endif
+#if STATIC_SAMPLES
   if (uSourceHasCamera[k] != 0 && uTargetHasCamera) {
     // Not at pixels with a moving sample (their surface is not where the cameras carry it).
     // t+-1 too: at 1080p a moving light's highlight or a shadow's edge moves tens of pixels
@@ -551,6 +555,7 @@ void gatherSource(int k, bool withChains) {
       if (surface == 1 || !(gTwoSurfaces || thin) || corner == first) break;
     }
   }
+#endif
 
 #if CHAINS
   if (withChains) {

@@ -115,16 +115,20 @@ struct WindowResolver::Impl {
   gl::Program surroundingsRowProgram, surroundingsProgram;
   gl::Texture surroundingRows, surroundings;
   gl::Framebuffer surroundingRowsTarget, surroundingsTarget;
-  // The gather with (index 1) and without (0) the chains of moving samples: a window whose
-  // frames have no moving sample uses the one without, which llvmpipe runs in half the time.
-  gl::Program gatherPrograms[2];
-  // And with PASS_GROUPS n (1 to kPassGroupsPerDraw) or CRYPTOMATTE (n = -1), built when first
-  // needed, by (chains, n).
-  std::vector<std::string> gatherPrefix[2];
+  // The gather's variants, built when first needed (gatherVariant): with and without the chains
+  // of moving samples (a window whose frames have no moving sample uses the one without, which
+  // llvmpipe runs in half the time), and with and without the static samples' camera carry (a
+  // resolved frame without a camera has none: vectors only). llvmpipe would run the code left
+  // out for every pixel, masked.
+  static constexpr int kGatherVariants = 4;
+  gl::Program gatherPrograms[kGatherVariants];
+  // And with PASS_GROUPS n (1 to kPassGroupsPerDraw) or CRYPTOMATTE (n = -1), by (variant, n).
+  std::vector<std::string> gatherPrefix[kGatherVariants];
+  color::OcioBracket::Range gatherWorkingRange{};  // glsl/finite_range.glsl's limits
   std::map<std::pair<int, int>, gl::Program> passPrograms;
   gl::AnySamplesQuery movingQuery;
-  // The tile test: the gather with TILE_STATS (by chains), its targets, the tiles' reach.
-  gl::Program statsPrograms[2];
+  // The tile test: the gather with TILE_STATS (by variant), its targets, the tiles' reach.
+  gl::Program statsPrograms[kGatherVariants];
   gl::Texture stats[4], tileReach;
   gl::Framebuffer statsTarget;
   // The statistics read back, and unpacked to a code per pixel and source: kept between frames.
@@ -220,13 +224,14 @@ struct WindowResolver::Impl {
     surroundingsProgram = gl::Program(gl, gl::embeddedShaderSource("fullscreen.vert"),
                                       gl::embeddedShaderSource("window_surroundings.frag",
                                                                {"#define FROM_RING 0"}));
-    for (int chains = 0; chains < 2; ++chains) {
-      std::vector<std::string> prefix = {"#define CHAINS " + std::to_string(chains), linearDefine,
-                                         bracket.fromWorking()->getShaderText()};
+    for (int variant = 0; variant < kGatherVariants; ++variant) {
+      std::vector<std::string> prefix = {
+          "#define CHAINS " + std::to_string(variant & 1),
+          "#define STATIC_SAMPLES " + std::to_string(variant >> 1), linearDefine,
+          bracket.fromWorking()->getShaderText()};
       if (linear) prefix.push_back(bracket.toWorking()->getShaderText());
-      gatherPrefix[chains] = prefix;
-      gatherPrograms[chains] = gl::Program(gl, gl::embeddedShaderSource("fullscreen.vert"),
-                                           gl::embeddedShaderSource("window_gather.frag", prefix));
+      gatherPrefix[variant] = prefix;
+      gatherPrograms[variant] = gl::Program();
     }
     toWorkingLuts = color::OcioGpuResources(gl, bracket.toWorking(), kFirstOcioUnit);
     fromWorkingLuts = color::OcioGpuResources(gl, bracket.fromWorking(), kFirstOcioUnit);
@@ -239,11 +244,7 @@ struct WindowResolver::Impl {
     // itself for input values.
     const color::OcioBracket::Range range =
         linear ? color::OcioBracket::Range{-65504.0f, 65504.0f} : bracket.workingRange();
-    for (const gl::Program& p : gatherPrograms) {
-      fromWorkingLuts.setUniforms(p);
-      if (linear) gatherToWorkingLuts.setUniforms(p);
-      p.set("uWorkingRange", range.lo, range.hi);
-    }
+    gatherWorkingRange = range;
     movingQuery = gl::AnySamplesQuery(gl);
     passPrograms.clear();
     for (gl::Program& p : statsPrograms) p = gl::Program();
@@ -253,10 +254,10 @@ struct WindowResolver::Impl {
     return options.window.nearRadius > 0 && options.window.nearRadius < options.window.radius;
   }
 
-  const gl::Program& statsProgram(int chains) {
-    gl::Program& p = statsPrograms[chains];
+  const gl::Program& statsProgram(int variant) {
+    gl::Program& p = statsPrograms[variant];
     if (p.id()) return p;
-    std::vector<std::string> prefix = gatherPrefix[chains];
+    std::vector<std::string> prefix = gatherPrefix[variant];
     prefix.insert(prefix.begin(), "#define TILE_STATS 1");
     p = gl::Program(gl, gl::embeddedShaderSource("fullscreen.vert"),
                     gl::embeddedShaderSource("window_gather.frag", prefix));
@@ -266,23 +267,29 @@ struct WindowResolver::Impl {
   }
 
   // The gather with `groups` pass groups (0: the beauty alone; -1: a Cryptomatte set).
-  const gl::Program& gatherProgram(int chains, int groups) {
-    if (groups == 0) return gatherPrograms[chains];
-    const auto key = std::make_pair(chains, groups);
+  const gl::Program& gatherProgram(int variant, int groups) {
+    if (groups == 0 && gatherPrograms[variant].id()) return gatherPrograms[variant];
+    const auto key = std::make_pair(variant, groups);
     auto found = passPrograms.find(key);
     if (found != passPrograms.end()) return found->second;
-    std::vector<std::string> prefix = gatherPrefix[chains];
-    prefix.insert(prefix.begin(), groups < 0 ? std::string("#define CRYPTOMATTE 1")
-                                             : "#define PASS_GROUPS " + std::to_string(groups));
+    std::vector<std::string> prefix = gatherPrefix[variant];
+    if (groups != 0) {
+      prefix.insert(prefix.begin(), groups < 0 ? std::string("#define CRYPTOMATTE 1")
+                                               : "#define PASS_GROUPS " + std::to_string(groups));
+    }
     gl::Program p(gl, gl::embeddedShaderSource("fullscreen.vert"),
                   gl::embeddedShaderSource("window_gather.frag", prefix));
     fromWorkingLuts.setUniforms(p);
     if (options.window.linear) gatherToWorkingLuts.setUniforms(p);
-    const color::OcioBracket::Range range =
-        options.window.linear ? color::OcioBracket::Range{-65504.0f, 65504.0f}
-                              : color::OcioBracket(options.color).workingRange();
-    p.set("uWorkingRange", range.lo, range.hi);
+    p.set("uWorkingRange", gatherWorkingRange.lo, gatherWorkingRange.hi);
+    if (groups == 0) return gatherPrograms[variant] = std::move(p);
     return passPrograms.emplace(key, std::move(p)).first->second;
+  }
+  // The variant of the gather (gatherPrograms) a frame's window needs.
+  int gatherVariant(bool chains, int frame) const {
+    const Slot& target = slots.at(frame);
+    const bool cameras = target.camera && options.cameraMotion != CameraMotion::Vectors;
+    return (chains ? 1 : 0) + (cameras ? 2 : 0);
   }
 
   // The first texture unit free for the passes: after the bracket's LUTs.
@@ -705,7 +712,7 @@ struct WindowResolver::Impl {
   // `setUniforms`, which returns the sources' offsets), pooled per tile into how far each side
   // of its window reaches (resolve/window_tiles), uploaded for the gather. False when no
   // source lies beyond the near frames (nothing to decide).
-  bool decideTiles(int chains,
+  bool decideTiles(int variant,
                    const std::function<std::vector<int>(const gl::Program&)>& setUniforms) {
     const int statsWidth = (width + kStatsStride - 1) / kStatsStride;
     const int statsHeight = (height + kStatsStride - 1) / kStatsStride;
@@ -714,7 +721,7 @@ struct WindowResolver::Impl {
       statsTarget = gl::Framebuffer(gl, std::vector<gl::Attachment>{&stats[0], &stats[1],
                                                                      &stats[2], &stats[3]});
     }
-    const gl::Program& p = statsProgram(chains);
+    const gl::Program& p = statsProgram(variant);
     statsTarget.bind();
     const std::vector<int> offsets = setUniforms(p);
     bool beyond = false;
@@ -828,7 +835,8 @@ struct WindowResolver::Impl {
       if (thinSearch() || regionTest()) surroundings.bind(surroundingsUnit());
       return offsets;
     };
-    const bool tiles = tileTest() && decideTiles(chains ? 1 : 0, [&](const gl::Program& p) {
+    const int kind = gatherVariant(chains, frame);
+    const bool tiles = tileTest() && decideTiles(kind, [&](const gl::Program& p) {
                          return setUniforms(p, false);
                        });
     // One draw of the gather into `target`; `variant` as gatherProgram's; `bindExtra` binds the
@@ -837,7 +845,7 @@ struct WindowResolver::Impl {
     // and each writes the colour too, the same every time.
     auto drawGather = [&](int variant, const gl::Framebuffer& target,
                           const std::function<void(const gl::Program&)>& bindExtra) {
-      const gl::Program& p = gatherProgram(chains ? 1 : 0, variant);
+      const gl::Program& p = gatherProgram(kind, variant);
       target.bind();
       setUniforms(p, tiles);
       bindExtra(p);
