@@ -120,15 +120,15 @@ struct WindowResolver::Impl {
   // llvmpipe runs in half the time), and with and without the static samples' camera carry (a
   // resolved frame without a camera has none: vectors only). llvmpipe would run the code left
   // out for every pixel, masked.
+  // Each variant's draws (gatherProgram): the beauty, PASS_GROUPS n (1 to kPassGroupsPerDraw),
+  // CRYPTOMATTE, TILE_STATS; by (variant, draw).
   static constexpr int kGatherVariants = 4;
-  gl::Program gatherPrograms[kGatherVariants];
-  // And with PASS_GROUPS n (1 to kPassGroupsPerDraw) or CRYPTOMATTE (n = -1), by (variant, n).
+  static constexpr int kCryptomatteDraw = -1, kTileStatsDraw = -2;
   std::vector<std::string> gatherPrefix[kGatherVariants];
   color::OcioBracket::Range gatherWorkingRange{};  // glsl/finite_range.glsl's limits
-  std::map<std::pair<int, int>, gl::Program> passPrograms;
+  std::map<std::pair<int, int>, gl::Program> gatherPrograms;
   gl::AnySamplesQuery movingQuery;
-  // The tile test: the gather with TILE_STATS (by variant), its targets, the tiles' reach.
-  gl::Program statsPrograms[kGatherVariants];
+  // The tile test: its targets (the gather's TILE_STATS draw writes them), the tiles' reach.
   gl::Texture stats[4], tileReach;
   gl::Framebuffer statsTarget;
   // The statistics read back, and unpacked to a code per pixel and source: kept between frames.
@@ -231,7 +231,6 @@ struct WindowResolver::Impl {
           bracket.fromWorking()->getShaderText()};
       if (linear) prefix.push_back(bracket.toWorking()->getShaderText());
       gatherPrefix[variant] = prefix;
-      gatherPrograms[variant] = gl::Program();
     }
     toWorkingLuts = color::OcioGpuResources(gl, bracket.toWorking(), kFirstOcioUnit);
     fromWorkingLuts = color::OcioGpuResources(gl, bracket.fromWorking(), kFirstOcioUnit);
@@ -246,44 +245,31 @@ struct WindowResolver::Impl {
         linear ? color::OcioBracket::Range{-65504.0f, 65504.0f} : bracket.workingRange();
     gatherWorkingRange = range;
     movingQuery = gl::AnySamplesQuery(gl);
-    passPrograms.clear();
-    for (gl::Program& p : statsPrograms) p = gl::Program();
+    gatherPrograms.clear();
   }
 
   bool tileTest() const {
     return options.window.nearRadius > 0 && options.window.nearRadius < options.window.radius;
   }
 
-  const gl::Program& statsProgram(int variant) {
-    gl::Program& p = statsPrograms[variant];
-    if (p.id()) return p;
+  // A variant's gather: `draw` 0 the beauty alone, n > 0 with n pass groups, kCryptomatteDraw
+  // a Cryptomatte set, kTileStatsDraw the tile test's statistics. Built when first needed.
+  const gl::Program& gatherProgram(int variant, int draw) {
+    const auto key = std::make_pair(variant, draw);
+    auto found = gatherPrograms.find(key);
+    if (found != gatherPrograms.end()) return found->second;
     std::vector<std::string> prefix = gatherPrefix[variant];
-    prefix.insert(prefix.begin(), "#define TILE_STATS 1");
-    p = gl::Program(gl, gl::embeddedShaderSource("fullscreen.vert"),
-                    gl::embeddedShaderSource("window_gather.frag", prefix));
-    fromWorkingLuts.setUniforms(p);
-    if (options.window.linear) gatherToWorkingLuts.setUniforms(p);
-    return p;
-  }
-
-  // The gather with `groups` pass groups (0: the beauty alone; -1: a Cryptomatte set).
-  const gl::Program& gatherProgram(int variant, int groups) {
-    if (groups == 0 && gatherPrograms[variant].id()) return gatherPrograms[variant];
-    const auto key = std::make_pair(variant, groups);
-    auto found = passPrograms.find(key);
-    if (found != passPrograms.end()) return found->second;
-    std::vector<std::string> prefix = gatherPrefix[variant];
-    if (groups != 0) {
-      prefix.insert(prefix.begin(), groups < 0 ? std::string("#define CRYPTOMATTE 1")
-                                               : "#define PASS_GROUPS " + std::to_string(groups));
+    if (draw != 0) {
+      prefix.insert(prefix.begin(), draw == kTileStatsDraw     ? std::string("#define TILE_STATS 1")
+                                    : draw == kCryptomatteDraw ? std::string("#define CRYPTOMATTE 1")
+                                    : "#define PASS_GROUPS " + std::to_string(draw));
     }
     gl::Program p(gl, gl::embeddedShaderSource("fullscreen.vert"),
                   gl::embeddedShaderSource("window_gather.frag", prefix));
     fromWorkingLuts.setUniforms(p);
     if (options.window.linear) gatherToWorkingLuts.setUniforms(p);
     p.set("uWorkingRange", gatherWorkingRange.lo, gatherWorkingRange.hi);
-    if (groups == 0) return gatherPrograms[variant] = std::move(p);
-    return passPrograms.emplace(key, std::move(p)).first->second;
+    return gatherPrograms.emplace(key, std::move(p)).first->second;
   }
   // The variant of the gather (gatherPrograms) a frame's window needs.
   int gatherVariant(bool chains, int frame) const {
@@ -721,7 +707,7 @@ struct WindowResolver::Impl {
       statsTarget = gl::Framebuffer(gl, std::vector<gl::Attachment>{&stats[0], &stats[1],
                                                                      &stats[2], &stats[3]});
     }
-    const gl::Program& p = statsProgram(variant);
+    const gl::Program& p = gatherProgram(variant, kTileStatsDraw);
     statsTarget.bind();
     const std::vector<int> offsets = setUniforms(p);
     bool beyond = false;
