@@ -53,7 +53,9 @@
 #endif            // (llvmpipe would run it, masked, for every pixel)
 #ifndef STATIC_SAMPLES
 #define STATIC_SAMPLES 1  // 0: the resolved frame has no camera (vectors only): no sample is
-#endif                    // carried by the cameras, and that code is left out
+#endif                    // carried by the cameras, and that code is left out; 2: every
+                          // camera is a pinhole (resolve/camera: isPinhole), so each carry's
+                          // offset is a translation: its x and y columns are zero
 const int kInversionSteps = 4;  // the most fixed-point steps of a chain ahead (see the chains)
 
 uniform usampler2DArray uRing;  // each frame's jittered samples (window_ring.glsl)
@@ -489,11 +491,18 @@ void gatherSource(int k, bool withChains) {
   gSourceLayer = uSourceLayer[k];
   gSourceJitter = uSourceJitter[k];
   gToTargetAlong = uToTargetAlong[k];
-  gToTargetOffset = uToTargetOffset[k];
   gToTargetDepthAlong = uToTargetDepthAlong[k];
-  gToTargetDepthOffset = uToTargetDepthOffset[k];
   mat3 fromTargetAlong = uFromTargetAlong[k];
+#if STATIC_SAMPLES == 2
+  // Zeros known here are loads saved (each a load per lane) and products the compiler drops.
+  gToTargetOffset = mat3(vec3(0.0), vec3(0.0), uToTargetOffset[k][2]);
+  gToTargetDepthOffset = vec3(0.0, 0.0, uToTargetDepthOffset[k].z);
+  mat3 fromTargetOffset = mat3(vec3(0.0), vec3(0.0), uFromTargetOffset[k][2]);
+#else
+  gToTargetOffset = uToTargetOffset[k];
+  gToTargetDepthOffset = uToTargetDepthOffset[k];
   mat3 fromTargetOffset = uFromTargetOffset[k];
+#endif
   int offsetFrames = uSourceOffset[k];
   int layer = gSourceLayer;
   vec2 jitter = gSourceJitter;

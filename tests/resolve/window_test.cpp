@@ -167,6 +167,69 @@ TEST_F(WindowTest, StaticJitteredEdgeConvergesToItsCoverage) {
   EXPECT_GT(std::fabs(alone.at(20, 8)[0] - truth(scene, 20, 20, 8)), 0.1f);
 }
 
+// An orthographic camera panning 0.37 px a frame over a still edge between 0 and 1 at world x
+// 0.3 (raster x 20.3 at frame 20): its rays do not meet at its origin, so its samples take the
+// camera carry's general form (the gather's pinhole form, which leaves the carry's offset out,
+// would put them up to the pan's whole length off).
+TEST_F(WindowTest, AnOrthographicCamerasSamplesAreCarriedByItsRays) {
+  constexpr double kScale = 40.0;  // raster pixels per world unit
+  const auto cameraX = [](int frame) { return (frame - 20) * 0.37 / kScale; };
+  const auto colourAt = [&](int frame, double rasterX) {
+    return (rasterX - kWidth / 2.0) / kScale + cameraX(frame) >= 0.3 / kScale ? 1.0f : 0.0f;
+  };
+  const auto camera = [&](int frame) {
+    FrameCamera c;
+    c.worldToCamera = glm::dmat4(1.0);
+    c.worldToCamera[3][0] = -cameraX(frame);
+    glm::dmat4 projection(1.0);  // NDC 0..1, y down, w = 1
+    projection[0][0] = kScale / kWidth;
+    projection[3][0] = 0.5;
+    projection[1][1] = kScale / kHeight;
+    projection[3][1] = 0.5;
+    projection[2][2] = 1.0 / (kFar - kNear);
+    projection[3][2] = -kNear / (kFar - kNear);
+    c.worldToNdc = projection * c.worldToCamera;
+    return c;
+  };
+  ASSERT_FALSE(isPinhole(camera(20), {0, 0, kWidth, kHeight}, NdcConvention::ZeroOneYDown));
+  const auto resolveAt = [&](int radius) {
+    WindowResolver resolver(*context_, windowOptions(radius));
+    for (int f = 20 - radius; f <= 20 + radius; ++f) {
+      const glm::vec2 jitter = frameJitter(f, JitterOptions{});
+      Image color(kWidth, kHeight, 4), depth(kWidth, kHeight, 1), motion(kWidth, kHeight, 2);
+      for (int y = 0; y < kHeight; ++y) {
+        for (int x = 0; x < kWidth; ++x) {
+          float* c = color.at(x, y);
+          c[0] = c[1] = c[2] = colourAt(f, x + 0.5 + jitter.x);
+          c[3] = 1.0f;
+          depth.at(x, y)[0] = 5.0f;
+          motion.at(x, y)[0] = 0.37f;  // the point was 0.37 px to the right a frame before
+          motion.at(x, y)[1] = 0.0f;
+        }
+      }
+      const FrameCamera frameCamera = camera(f);
+      ResolveInput input;
+      input.color = &color;
+      input.depth = &depth;
+      input.motion = &motion;
+      input.jitter = jitter;
+      input.camera = &frameCamera;
+      input.window = {0, 0, kWidth, kHeight};
+      input.ndc = NdcConvention::ZeroOneYDown;
+      resolver.addFrame(f, input);
+    }
+    return std::move(*resolver.resolve(20, 20 - radius, 20 + radius, SampleType::Float).floats());
+  };
+  const Image out = resolveAt(8);
+  for (int y = 2; y < kHeight - 2; ++y) {
+    EXPECT_NEAR(out.at(20, y)[0], 0.7f, 0.05f) << "y " << y;
+    EXPECT_NEAR(out.at(16, y)[0], 0.0f, 1e-3f);
+    EXPECT_NEAR(out.at(24, y)[0], 1.0f, 1e-3f);
+  }
+  const Image alone = resolveAt(0);
+  EXPECT_GT(std::fabs(alone.at(20, 8)[0] - 0.7f), 0.1f);
+}
+
 TEST_F(WindowTest, WithoutCamerasTheVectorsCarryTheSamples) {
   // The edge moves 2 px a frame, said by the vectors alone: no camera matrices.
   Scene scene;

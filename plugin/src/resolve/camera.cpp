@@ -1,6 +1,7 @@
 #include "resolve/camera.h"
 
 #include <glm/gtc/matrix_inverse.hpp>
+#include <glm/geometric.hpp>
 #include <glm/vec4.hpp>
 
 #include <cmath>
@@ -48,25 +49,55 @@ glm::dvec3 cameraPointAt(const glm::dmat4& rasterToCamera, glm::dvec2 position, 
   return nearPoint + along * ((depth - nearPoint.z) / along.z);
 }
 
+// P(x, y, d) = d A (x, y, 1) + G (x, y, 1), the camera-space point raster (x, y) sees at
+// planar depth d, at three raster positions: A's and G's columns there, from the points at
+// depths 1 and 2 (exact, P being affine in x, y and in d for projective cameras).
+struct RasterRays {
+  glm::dvec3 along[3], offset[3];
+};
+RasterRays rasterRays(const glm::dmat4& rasterToCamera) {
+  RasterRays rays;
+  const glm::dvec2 corners[3] = {{0.0, 0.0}, {1.0, 0.0}, {0.0, 1.0}};
+  for (int i = 0; i < 3; ++i) {
+    const glm::dvec3 one = cameraPointAt(rasterToCamera, corners[i], 1.0);
+    const glm::dvec3 two = cameraPointAt(rasterToCamera, corners[i], 2.0);
+    rays.along[i] = two - one;
+    rays.offset[i] = one - rays.along[i];
+  }
+  return rays;
+}
+
+glm::dmat4 rasterToCameraOf(const FrameCamera& camera, const RasterWindow& window,
+                            NdcConvention convention) {
+  return glm::inverse(camera.worldToNdc * glm::inverse(camera.worldToCamera)) *
+         ndcFromRaster(window, convention);
+}
+
+// The rays start at the origin: G's columns are rounding noise against A's.
+bool raysMeetAtOrigin(const RasterRays& rays) {
+  for (int i = 0; i < 3; ++i) {
+    if (glm::length(rays.offset[i]) > 1e-9 * glm::length(rays.along[i])) return false;
+  }
+  return true;
+}
+
 }  // namespace
+
+bool isPinhole(const FrameCamera& camera, const RasterWindow& window, NdcConvention convention) {
+  return raysMeetAtOrigin(rasterRays(rasterToCameraOf(camera, window, convention)));
+}
 
 FrameCarry frameCarry(const FrameCamera& from, const FrameCamera& to, const RasterWindow& window,
                       NdcConvention convention) {
   const glm::dmat4 ndcFromRasterM = ndcFromRaster(window, convention);
   const glm::dmat4 cameraToWorld = glm::inverse(from.worldToCamera);
-  const glm::dmat4 rasterToCamera =
-      glm::inverse(from.worldToNdc * cameraToWorld) * ndcFromRasterM;
-  // P(x, y, d) = d A (x, y, 1) + G (x, y, 1): from the points at depths 1 and 2 of three raster
-  // positions (exact, P being affine in x, y and in d for projective cameras).
-  glm::dmat4 a(0.0), g(0.0);  // upper-left 3x3 used; g[3][3] = 1 carries the homogeneous 1
-  const glm::dvec2 corners[3] = {{0.0, 0.0}, {1.0, 0.0}, {0.0, 1.0}};
-  glm::dvec3 along[3], offset[3];
-  for (int i = 0; i < 3; ++i) {
-    const glm::dvec3 one = cameraPointAt(rasterToCamera, corners[i], 1.0);
-    const glm::dvec3 two = cameraPointAt(rasterToCamera, corners[i], 2.0);
-    along[i] = two - one;
-    offset[i] = one - along[i];
+  RasterRays rays = rasterRays(rasterToCameraOf(from, window, convention));
+  if (raysMeetAtOrigin(rays)) {
+    for (glm::dvec3& offset : rays.offset) offset = glm::dvec3(0.0);
   }
+  const glm::dvec3* along = rays.along;
+  const glm::dvec3* offset = rays.offset;
+  glm::dmat4 a(0.0), g(0.0);  // upper-left 3x3 used; g[3][3] = 1 carries the homogeneous 1
   // Columns: d(x), d(y), constant.
   a[0] = glm::dvec4(along[1] - along[0], 0.0);
   a[1] = glm::dvec4(along[2] - along[0], 0.0);

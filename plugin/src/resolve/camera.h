@@ -53,8 +53,15 @@ struct FrameCarry {
   CarryMatrices toRaster;
   CarryMatrices toCamera;
 };
+// `from`'s offsets are exactly zero when it is a pinhole camera (isPinhole): its rays meet at
+// its origin, which the sums that find G would leave as rounding noise.
 FrameCarry frameCarry(const FrameCamera& from, const FrameCamera& to, const RasterWindow& window,
                       NdcConvention convention);
+
+// Whether every ray of `camera` starts at its origin (G = 0 above: perspective, not
+// orthographic): the carries from it have offsets whose x and y columns are zero, which the
+// window gather's pinhole variant leaves out.
+bool isPinhole(const FrameCamera& camera, const RasterWindow& window, NdcConvention convention);
 
 // The motion (pixels, y down, to the previous frame) of a static surface seen at raster
 // position (x, y) at planar depth `depth`: the CPU twin of cameraMotion() in the shader.

@@ -118,11 +118,13 @@ struct WindowResolver::Impl {
   // The gather's variants, built when first needed (gatherVariant): with and without the chains
   // of moving samples (a window whose frames have no moving sample uses the one without, which
   // llvmpipe runs in half the time), and with and without the static samples' camera carry (a
-  // resolved frame without a camera has none: vectors only). llvmpipe would run the code left
-  // out for every pixel, masked.
+  // resolved frame without a camera has none: vectors only), that carry for pinhole cameras
+  // alone or for any (resolve/camera's isPinhole: a pinhole carry's offset is a translation,
+  // and 14 of the 48 values each source loads lane by lane are zeros). llvmpipe would run the
+  // code left out for every pixel, masked.
   // Each variant's draws (gatherProgram): the beauty, PASS_GROUPS n (1 to kPassGroupsPerDraw),
   // CRYPTOMATTE, TILE_STATS; by (variant, draw).
-  static constexpr int kGatherVariants = 4;
+  static constexpr int kGatherVariants = 6;  // chains (bit 0) x STATIC_SAMPLES 0, 1, 2
   static constexpr int kCryptomatteDraw = -1, kTileStatsDraw = -2;
   std::vector<std::string> gatherPrefix[kGatherVariants];
   color::OcioBracket::Range gatherWorkingRange{};  // glsl/finite_range.glsl's limits
@@ -188,6 +190,7 @@ struct WindowResolver::Impl {
     NdcConvention ndc = NdcConvention::ZeroOneYDown;
     bool hasDepth = false, hasMotion = false;
     bool hasMoving = false;  // any sample classified moving
+    bool pinhole = false;    // its camera's rays meet at its origin (resolve/camera: isPinhole)
     int passLayer = -1;
   };
   std::map<int, Slot> slots;
@@ -271,11 +274,19 @@ struct WindowResolver::Impl {
     p.set("uWorkingRange", gatherWorkingRange.lo, gatherWorkingRange.hi);
     return gatherPrograms.emplace(key, std::move(p)).first->second;
   }
-  // The variant of the gather (gatherPrograms) a frame's window needs.
-  int gatherVariant(bool chains, int frame) const {
+  // The variant of the gather (gatherPrograms) frame's window first..last needs.
+  int gatherVariant(bool chains, int frame, int first, int last) const {
     const Slot& target = slots.at(frame);
     const bool cameras = target.camera && options.cameraMotion != CameraMotion::Vectors;
-    return (chains ? 1 : 0) + (cameras ? 2 : 0);
+    // The pinhole carry where every carry is between pinhole cameras (the sources without a
+    // camera carry nothing by the cameras).
+    bool pinhole = target.pinhole;
+    for (int f : FrameSpan(first, last)) {
+      const Slot& source = slots.at(f);
+      pinhole = pinhole && (!source.camera || source.pinhole);
+    }
+    const int staticSamples = !cameras ? 0 : pinhole ? 2 : 1;
+    return (chains ? 1 : 0) + 2 * staticSamples;
   }
 
   // The first texture unit free for the passes: after the bracket's LUTs.
@@ -578,6 +589,7 @@ struct WindowResolver::Impl {
     if (input.camera) slot.camera = *input.camera;
     slot.window = input.window;
     slot.ndc = input.ndc;
+    slot.pinhole = input.camera && isPinhole(*input.camera, slot.window, slot.ndc);
     slot.hasDepth = bool(input.depth);
     slot.hasMotion = bool(input.motion);
     freeLayers.pop_back();
@@ -821,7 +833,7 @@ struct WindowResolver::Impl {
       if (thinSearch() || regionTest()) surroundings.bind(surroundingsUnit());
       return offsets;
     };
-    const int kind = gatherVariant(chains, frame);
+    const int kind = gatherVariant(chains, frame, first, last);
     const bool tiles = tileTest() && decideTiles(kind, [&](const gl::Program& p) {
                          return setUniforms(p, false);
                        });
