@@ -16,6 +16,7 @@
 #include "resolve/camera.h"
 #include "resolve/jitter.h"
 #include "resolve/window_resolver.h"
+#include "util/frame_buffer_pool.h"
 
 namespace taa {
 namespace {
@@ -785,6 +786,30 @@ TEST_F(WindowTest, AFrameDependsOnItsWindowAlone) {
   EXPECT_EQ(std::memcmp(alone.pixels.data(), fromRunning.pixels.data(),
                         alone.pixels.size() * sizeof(float)),
             0);
+}
+
+// With passes a run's peak memory is its bar: while a resolver has them, the frame buffer pool
+// keeps nothing, whichever face drives the resolver; without, and once it is gone, it keeps.
+TEST_F(WindowTest, TheFrameBufferPoolKeepsNothingWhileAResolverHasPasses) {
+  constexpr std::size_t kFrameBytes = std::size_t(8) << 20;
+  const auto keepsAFreedBuffer = [] {
+    releaseFrameBuffers();
+    giveBackFrameBuffer(takeFrameBuffer(kFrameBytes), kFrameBytes);
+    return keptFrameBufferBytes() == kFrameBytes;
+  };
+  WindowResolver plain(*context_, windowOptions(1));
+  EXPECT_TRUE(keepsAFreedBuffer());
+  {
+    WindowResolver withPasses(*context_, windowOptions(1));
+    withPasses.setPasses({true, false}, 1);
+    EXPECT_FALSE(keepsAFreedBuffer());
+    withPasses.setPasses({}, 0);
+    EXPECT_TRUE(keepsAFreedBuffer());
+    withPasses.setPasses({false}, 0);
+    EXPECT_FALSE(keepsAFreedBuffer());
+  }
+  EXPECT_TRUE(keepsAFreedBuffer());
+  releaseFrameBuffers();
 }
 
 TEST_F(WindowTest, AFullRingIsAnError) {

@@ -735,7 +735,6 @@ class WindowRun {
     if (!ioDepthSet_) {
       reads_.setDepth(ioDepthOf(job_, hasPasses()));
       writes_.setDepth(ioDepthOf(job_, hasPasses()));
-      if (hasPasses()) buffersNotKept_.emplace();
       ioDepthSet_ = true;
     }
   }
@@ -832,9 +831,6 @@ class WindowRun {
   std::vector<std::optional<PassPlan>> passPlans_;
   std::string passFile_;  // the file the plans came from, for the message when one differs
   bool ioDepthSet_ = false;
-  // With passes the peak memory is the bar (4 GiB at 1080p) and the pool's idle buffers were
-  // 55 MB of it, for no time (docs/PERFORMANCE.md, "Every pass and the pool").
-  std::optional<FrameBuffersNotKept> buffersNotKept_;
   std::vector<int> inRing_;
   std::map<int, io::FrameData> waiting_;  // read output frames, pixels dropped once uploaded
   bool toldVectorsOnly_ = false;

@@ -19,6 +19,7 @@
 #include "resolve/window_frame_weight.h"
 #include "resolve/window_tiles.h"
 #include "taa/error.h"
+#include "util/frame_buffer_pool.h"
 #include "util/frame_span.h"
 
 namespace taa {
@@ -160,6 +161,12 @@ struct WindowResolver::Impl {
   gl::Framebuffer gatherTarget;
   bool gatherHasDebug = false;
 
+  // With passes a run's peak memory is its bar (4 GiB at 1080p with every pass), and idle
+  // buffers in the frame buffer pool were 55 MB of it, for no time (docs/PERFORMANCE.md,
+  // "Every pass and the pool"): while this resolver has passes the pool keeps none, whichever
+  // face (taatool, taa-farm, the C ABI, Python, OpenFX) drives it. Declared before the buffers
+  // it covers, so that it outlives them.
+  std::optional<FrameBuffersNotKept> buffersNotKept;
   // Passes (setPassGroups): one ring per group of four values, a layer per frame that stays
   // put (the colour ring's layers swap as frames are classified); the sums of the last frame.
   std::vector<bool> passHalf;
@@ -945,6 +952,11 @@ void WindowResolver::setPasses(const std::vector<bool>& halfGroups, int cryptoma
   impl_->passHalf = halfGroups;
   impl_->cryptomatteSets = cryptomatteSets;
   impl_->allocatePasses();
+  if (!impl_->hasPasses()) {
+    impl_->buffersNotKept.reset();
+  } else if (!impl_->buffersNotKept) {
+    impl_->buffersNotKept.emplace();
+  }
 }
 
 PassSums WindowResolver::takePassSums() { return std::move(impl_->lastSums); }
