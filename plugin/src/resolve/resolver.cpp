@@ -11,6 +11,7 @@
 #include "color/ocio_gpu_resources.h"
 #include "gl/objects.h"
 #include "resolve/reconstruction_filter.h"
+#include "resolve/resolve_input.h"
 #include "taa/error.h"
 
 namespace taa {
@@ -55,23 +56,6 @@ std::vector<std::string> resolveDefines(const ResolveOptions& o) {
           define("BOX_SPACE_YCOCG", o.boxSpace == BoxSpace::YCoCg ? 1 : 0),
           define("NEIGHBOURHOOD", o.neighbourhood == Neighbourhood::Plus5 ? 5 : 9)};
 }
-
-void checkPlane(const ImageView& plane, const ImageView& color, int channels, const char* name) {
-  if (!plane) return;
-  if (plane.width != color.width || plane.height != color.height) {
-    throw Error(std::string(name) + " is " + std::to_string(plane.width) + "x" +
-                    std::to_string(plane.height) + " but color is " +
-                    std::to_string(color.width) + "x" + std::to_string(color.height),
-                {"", std::nullopt, name});
-  }
-  if (plane.channels != channels) {
-    throw Error(std::string(name) + " must have " + std::to_string(channels) +
-                    " channels, has " + std::to_string(plane.channels),
-                {"", std::nullopt, name});
-  }
-}
-
-GLenum glType(SampleType type) { return type == SampleType::Half ? GL_HALF_FLOAT : GL_FLOAT; }
 
 void requireRange(float value, float lo, float hi, const char* name) {
   if (!(value >= lo && value <= hi)) {

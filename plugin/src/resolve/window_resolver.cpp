@@ -15,6 +15,7 @@
 #include "color/ocio_gpu_resources.h"
 #include "gl/objects.h"
 #include "resolve/reconstruction_filter.h"
+#include "resolve/resolve_input.h"
 #include "resolve/window_budget.h"
 #include "resolve/window_frame_weight.h"
 #include "resolve/window_tiles.h"
@@ -58,23 +59,6 @@ constexpr int kPassGroupsPerDraw = 6;
 
 // How window_classify.frag decides which samples are static.
 enum class Classify : int { NoCamera = 0, PreviousCamera = 1, NextFrame = 2, AllStatic = 3 };
-
-void checkPlane(const ImageView& plane, const ImageView& color, int channels, const char* name) {
-  if (!plane) return;
-  if (plane.width != color.width || plane.height != color.height) {
-    throw Error(std::string(name) + " is " + std::to_string(plane.width) + "x" +
-                    std::to_string(plane.height) + " but color is " +
-                    std::to_string(color.width) + "x" + std::to_string(color.height),
-                {"", std::nullopt, name});
-  }
-  if (plane.channels != channels) {
-    throw Error(std::string(name) + " must have " + std::to_string(channels) +
-                    " channels, has " + std::to_string(plane.channels),
-                {"", std::nullopt, name});
-  }
-}
-
-GLenum glType(SampleType type) { return type == SampleType::Half ? GL_HALF_FLOAT : GL_FLOAT; }
 
 void validateOptions(const ResolveOptions& o) {
   const WindowOptions& w = o.window;
