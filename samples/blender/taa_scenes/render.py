@@ -19,30 +19,19 @@ import bpy
 import numpy as np
 
 
-def radical_inverse(index, base):
-    result, weight = 0.0, 1.0 / base
-    while index > 0:
-        result += (index % base) * weight
-        index //= base
-        weight /= base
-    return result
-
-
-def halton_jitter(index):
-    """taa's default jitter: Halton(2, 3) at `index`, minus 0.5 (pixels, x right, y down)."""
-    return radical_inverse(index, 2) - 0.5, radical_inverse(index, 3) - 0.5
-
-
 ADDON_DIR = os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', '..', '..', 'plugin',
                          'blender')
+if ADDON_DIR not in sys.path:
+    sys.path.insert(0, ADDON_DIR)
+# taa's default jitter, Halton(2, 3) at an index minus 0.5 (pixels, x right, y down): the
+# add-on's own, which the input is rendered through.
+from taa_render.halton import frame_jitter as halton_jitter  # noqa: E402
 
 
 def register_addon():
     """taa's Blender add-on (plugin/blender/taa_render), registered from the source tree: the
     input is rendered through it as a user renders (README "Rendering input for taa")."""
     import importlib
-    if ADDON_DIR not in sys.path:
-        sys.path.insert(0, ADDON_DIR)
     addon = importlib.import_module('taa_render')
     if not hasattr(bpy.types.Scene, 'taa_render'):
         addon.register()
