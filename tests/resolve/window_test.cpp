@@ -117,9 +117,20 @@ ResolveOptions windowOptions(int radius) {
   return o;
 }
 
+// The means over a patch of a frame resolved with some options and with one changed.
+struct PatchMeans {
+  double asGiven, changed;
+};
+
 class WindowTest : public ::testing::Test {
  protected:
   void SetUp() override { context_ = gl::Context::create(gl::Backend::Auto); }
+
+  // The means over x0..x1, y0..y1 of `frame` resolved with `options` and with `change` made to
+  // them.
+  PatchMeans patchMeans(const Scene& scene, int frame, ResolveOptions options,
+                        const std::function<void(ResolveOptions&)>& change, int x0, int x1,
+                        int y0, int y1);
 
   // Resolves `frame` from frames frame-K..frame+K of the scene, on a resolver holding only them.
   Image resolve(const Scene& scene, int frame, const ResolveOptions& options) {
@@ -584,22 +595,32 @@ double meanOver(const Image& image, int x0, int x1, int y0, int y1) {
 
 constexpr double kShadowedFloor = 0.5 * 0.65;  // the noisy floor's mean, 35 % darker
 
+PatchMeans WindowTest::patchMeans(const Scene& scene, int frame, ResolveOptions options,
+                                  const std::function<void(ResolveOptions&)>& change, int x0,
+                                  int x1, int y0, int y1) {
+  const double asGiven = meanOver(resolve(scene, frame, options), x0, x1, y0, y1);
+  change(options);
+  return {asGiven, meanOver(resolve(scene, frame, options), x0, x1, y0, y1)};
+}
+
+// The patch as given is nearer the shadowed floor's mean than `share` of the changed one's
+// brightening over it.
+void expectNearerTheShadow(PatchMeans means, double share) {
+  EXPECT_LT(std::fabs(means.asGiven - kShadowedFloor), share * (means.changed - kShadowedFloor))
+      << means.asGiven << " and " << means.changed << " against " << kShadowedFloor;
+}
+
 // The region test (--window-region-tolerance) keeps the patch where the pixel's own test
 // cannot.
 TEST_F(WindowTest, TheRegionTestKeepsAShadowThatOneSamplesNoiseHides) {
   const Scene scene = shadowOnANoisyFloor();
   const int frame = 8;  // the patch over x 20..32, y 2..14
-  ResolveOptions options = windowOptions(ResolveOptions{}.window.radius);
+  const ResolveOptions options = windowOptions(ResolveOptions{}.window.radius);
   ASSERT_GT(options.window.regionTolerance, 0.0f);  // the default
-  const Image region = resolve(scene, frame, options);
-  options.window.regionTolerance = 0.0f;
-  const Image pixelOnly = resolve(scene, frame, options);
   // Inside the patch, the mean brightening over the shadowed floor's own mean (the unshadowed
   // frames' samples lighten it; the noise, left less averaged by the region test, evens out).
-  const double regionMean = meanOver(region, 23, 29, 5, 11);
-  const double pixelMean = meanOver(pixelOnly, 23, 29, 5, 11);
-  EXPECT_LT(std::fabs(regionMean - kShadowedFloor), 0.5 * (pixelMean - kShadowedFloor))
-      << regionMean << " and " << pixelMean << " against " << kShadowedFloor;
+  const auto untested = [](ResolveOptions& o) { o.window.regionTolerance = 0.0f; };
+  expectNearerTheShadow(patchMeans(scene, frame, options, untested, 23, 29, 5, 11), 0.5);
 }
 
 // shadowOnANoisyFloor with the block that casts the patch standing in front of it, nearer
@@ -624,17 +645,14 @@ Scene contactShadowOnANoisyFloor(double speed = 1.5) {
 TEST_F(WindowTest, TheRegionTestIsStricterBesideAMovingObject) {
   const Scene scene = contactShadowOnANoisyFloor();
   const int frame = 8;  // the block over x 16..20, the patch over x 20..32, y 2..14
-  ResolveOptions options = windowOptions(ResolveOptions{}.window.radius);
+  const ResolveOptions options = windowOptions(ResolveOptions{}.window.radius);
   ASSERT_LT(options.window.regionToleranceNearMoving, options.window.regionTolerance);
-  const Image strict = resolve(scene, frame, options);
-  options.window.regionToleranceNearMoving = options.window.regionTolerance;
-  const Image loose = resolve(scene, frame, options);
   // The mean brightening over the shadowed floor's own mean across the whole patch, its
   // edges included (measured: 0.015 with the default, 0.035 with 3).
-  const double strictMean = meanOver(strict, 21, 31, 3, 13);
-  const double looseMean = meanOver(loose, 21, 31, 3, 13);
-  EXPECT_LT(std::fabs(strictMean - kShadowedFloor), 0.6 * (looseMean - kShadowedFloor))
-      << strictMean << " and " << looseMean << " against " << kShadowedFloor;
+  const auto loose = [](ResolveOptions& o) {
+    o.window.regionToleranceNearMoving = o.window.regionTolerance;
+  };
+  expectNearerTheShadow(patchMeans(scene, frame, options, loose, 21, 31, 3, 13), 0.6);
 }
 
 // The same contact shadow moving 8 px a frame, as a 1080p render's does: where the patch is at
@@ -646,14 +664,9 @@ TEST_F(WindowTest, TheRegionTestIsStricterBesideAMovingObject) {
 TEST_F(WindowTest, NearAMovingObjectTheNextFramesAreRegionTestedToo) {
   const Scene scene = contactShadowOnANoisyFloor(8.0);
   const int frame = 8;  // the block over x 16..20, the patch over x 20..32, y 2..14
-  ResolveOptions options = windowOptions(1);
-  const Image strict = resolve(scene, frame, options);
-  options.window.regionToleranceNearMoving = 1000.0f;
-  const Image loose = resolve(scene, frame, options);
-  const double strictMean = meanOver(strict, 22, 30, 4, 12);
-  const double looseMean = meanOver(loose, 22, 30, 4, 12);
-  EXPECT_LT(std::fabs(strictMean - kShadowedFloor), 0.5 * (looseMean - kShadowedFloor))
-      << strictMean << " and " << looseMean << " against " << kShadowedFloor;
+  const auto loose = [](ResolveOptions& o) { o.window.regionToleranceNearMoving = 1000.0f; };
+  expectNearerTheShadow(patchMeans(scene, frame, windowOptions(1), loose, 22, 30, 4, 12),
+                        0.5);
 }
 
 // A shadow sweeping 8 px a frame with nothing moving near it (a moving light's, at 1080p): t+-1
@@ -664,15 +677,10 @@ TEST_F(WindowTest, NearAMovingObjectTheNextFramesAreRegionTestedToo) {
 TEST_F(WindowTest, TheNextFramesAreRegionTestedAwayFromMovingObjectsToo) {
   const Scene scene = shadowOnANoisyFloor(8.0);
   const int frame = 8;  // the patch over x 20..32, y 2..14
-  ResolveOptions options = windowOptions(1);
+  const ResolveOptions options = windowOptions(1);
   ASSERT_GT(options.window.regionTolerance, 0.0f);  // the default
-  const Image tested = resolve(scene, frame, options);
-  options.window.regionTolerance = 0.0f;
-  const Image untested = resolve(scene, frame, options);
-  const double testedMean = meanOver(tested, 22, 30, 4, 12);
-  const double untestedMean = meanOver(untested, 22, 30, 4, 12);
-  EXPECT_LT(std::fabs(testedMean - kShadowedFloor), 0.5 * (untestedMean - kShadowedFloor))
-      << testedMean << " and " << untestedMean << " against " << kShadowedFloor;
+  const auto untested = [](ResolveOptions& o) { o.window.regionTolerance = 0.0f; };
+  expectNearerTheShadow(patchMeans(scene, frame, options, untested, 22, 30, 4, 12), 0.5);
 }
 
 // A faint shadow (3 % darker) sweeping 8 px a frame over a floor that brightens smoothly to the
@@ -689,16 +697,14 @@ TEST_F(WindowTest, TheRegionTestTellsAFaintShadowFromAGradient) {
     return Hit{float((0.2 + 0.02 * x) * (shadowed ? 0.97 : 1.0)), 5.0};
   };
   const int frame = 8;  // the patch over x 20..32, y 2..14
-  ResolveOptions options = windowOptions(1);
-  const Image tested = resolve(scene, frame, options);
-  options.window.regionTolerance = 0.0f;
-  const Image untested = resolve(scene, frame, options);
+  const auto untested = [](ResolveOptions& o) { o.window.regionTolerance = 0.0f; };
+  const PatchMeans means = patchMeans(scene, frame, windowOptions(1), untested, 22, 30, 4, 12);
   double truthMean = 0.0;
   for (int y = 4; y < 12; ++y) {
     for (int x = 22; x < 30; ++x) truthMean += truth(scene, frame, x, y) / 64.0;
   }
-  const double testedError = std::fabs(meanOver(tested, 22, 30, 4, 12) - truthMean);
-  const double untestedError = std::fabs(meanOver(untested, 22, 30, 4, 12) - truthMean);
+  const double testedError = std::fabs(means.asGiven - truthMean);
+  const double untestedError = std::fabs(means.changed - truthMean);
   EXPECT_LT(testedError, 0.5 * untestedError) << testedError << " and " << untestedError;
 }
 
