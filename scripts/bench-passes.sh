@@ -10,7 +10,10 @@
 #            64-frame sequence (1-10, 9-2, 1-10, ...), so that every output has a full window
 #            (the colour's default reaches 16 frames each side, more than the cache holds);
 #            each run resolves frames 17-24 and 17-32 and the figure is the difference over 8
-#            (seconds a frame, the start-up and the first window's reads cancelled)
+#            (seconds a frame, the start-up and the first window's reads cancelled); beside it
+#            the median time between the 17-32 run's frames 19-32 as they are written (-v's
+#            lines, time-stamped): one run's noise moves a difference of two runs far more
+#            than a median of 13 intervals
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 taatool="${TAATOOL:-$root/build/bin/taatool}"
@@ -63,18 +66,32 @@ link_steady() {
     frame=$((frame + 1))
   done
 }
+# Each line of stdin with the time it arrived (seconds) in front.
+stamp_lines() {
+  local line
+  while IFS= read -r line; do printf '%s %s\n' "$EPOCHREALTIME" "$line"; done
+}
 steady() {
   local name="$1"; shift
   local short long rss
   for range in 17-24 17-32; do
     rm -rf "$work/out-$name"
     /usr/bin/time -f "%e %M" -o "$work/time-$name-$range" "$taatool" --preset cycles \
-        "$linked/input.####.exr" --frames "$range" -o "$work/out-$name/r.####.exr" -q "$@"
+        "$linked/input.####.exr" --frames "$range" -o "$work/out-$name/r.####.exr" -v "$@" |
+      stamp_lines > "$work/lines-$name-$range"
   done
   read -r short _ < "$work/time-$name-17-24"
   read -r long rss < "$work/time-$name-17-32"
+  local median
+  median=$(/usr/bin/python3 - "$work/lines-$name-17-32" <<'PY'
+import statistics, sys
+stamps = [float(line.split()[0]) for line in open(sys.argv[1]) if line.split()[1:2] == ['frame']]
+print(round(statistics.median(b - a for a, b in zip(stamps[2:], stamps[3:])), 2))
+PY
+)
   echo "$name (steady state): 17-24 ${short} s, 17-32 ${long} s:" \
       "$(/usr/bin/python3 -c "print(round(($long - $short) / 8, 2))") s a frame," \
+      "median between frames 19-32 ${median} s," \
       "peak RSS $((rss / 1024)) MiB"
 }
 if [ "${STEADY:-0}" = 1 ]; then
