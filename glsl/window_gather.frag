@@ -63,7 +63,6 @@ uniform usampler2DArray uRingMotion;  // and their motion, at the same layer
 
 uniform int uTargetLayer;
 uniform vec2 uTargetJitter;
-uniform bool uTargetHasCamera;
 uniform float uReconstruction[9];  // t's 3x3 unjitter weights (resolve/reconstruction_filter)
 
 // Source frames ordered by distance: t-1, t+1, t-2, t+2, ... (the chains walk outward). The
@@ -531,7 +530,7 @@ void gatherSource(int k, bool withChains) {
   cryptoSourceBegin();
 #endif
 #if STATIC_SAMPLES
-  if (uSourceHasCamera[k] != 0 && uTargetHasCamera) {
+  if (uSourceHasCamera[k] != 0) {
     // Not at pixels with a moving sample (their surface is not where the cameras carry it).
     // t+-1 too: at 1080p a moving light's highlight or a shadow's edge moves tens of pixels
     // a frame, and t+-1's samples of it would draw it where it was (docs/TUNING.md, "The

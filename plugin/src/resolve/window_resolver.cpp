@@ -626,7 +626,6 @@ struct WindowResolver::Impl {
         reconstructionWeights(options.reconstruction, target.jitter);
     p.setArray("uReconstruction", weights.data(), int(weights.size()));
     const bool useCameras = target.camera && options.cameraMotion != CameraMotion::Vectors;
-    p.set("uTargetHasCamera", useCameras ? 1 : 0);
     p.set("uTargetPassLayer", target.passLayer);
 
     std::vector<int> layers, passLayers, offsets, hasCamera;
