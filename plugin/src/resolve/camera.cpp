@@ -67,10 +67,9 @@ RasterRays rasterRays(const glm::dmat4& rasterToCamera) {
   return rays;
 }
 
-glm::dmat4 rasterToCameraOf(const FrameCamera& camera, const RasterWindow& window,
-                            NdcConvention convention) {
-  return glm::inverse(camera.worldToNdc * glm::inverse(camera.worldToCamera)) *
-         ndcFromRaster(window, convention);
+// (raster x, raster y, ndc z, 1) to `camera`'s homogeneous camera space.
+glm::dmat4 rasterToCameraOf(const FrameCamera& camera, const glm::dmat4& ndcFromRasterM) {
+  return glm::inverse(camera.worldToNdc * glm::inverse(camera.worldToCamera)) * ndcFromRasterM;
 }
 
 // The rays start at the origin: G's columns are rounding noise against A's.
@@ -84,14 +83,15 @@ bool raysMeetAtOrigin(const RasterRays& rays) {
 }  // namespace
 
 bool isPinhole(const FrameCamera& camera, const RasterWindow& window, NdcConvention convention) {
-  return raysMeetAtOrigin(rasterRays(rasterToCameraOf(camera, window, convention)));
+  return raysMeetAtOrigin(
+      rasterRays(rasterToCameraOf(camera, ndcFromRaster(window, convention))));
 }
 
 FrameCarry frameCarry(const FrameCamera& from, const FrameCamera& to, const RasterWindow& window,
                       NdcConvention convention) {
   const glm::dmat4 ndcFromRasterM = ndcFromRaster(window, convention);
   const glm::dmat4 cameraToWorld = glm::inverse(from.worldToCamera);
-  RasterRays rays = rasterRays(rasterToCameraOf(from, window, convention));
+  RasterRays rays = rasterRays(rasterToCameraOf(from, ndcFromRasterM));
   if (raysMeetAtOrigin(rays)) {
     for (glm::dvec3& offset : rays.offset) offset = glm::dvec3(0.0);
   }
@@ -119,8 +119,7 @@ glm::dvec2 cameraMotion(const FrameCamera& current, const FrameCamera& previous,
                         double depth) {
   const glm::dmat4 ndcFromRasterM = ndcFromRaster(window, convention);
   const glm::dmat4 cameraToWorld = glm::inverse(current.worldToCamera);
-  const glm::dmat4 rasterToCamera =
-      glm::inverse(current.worldToNdc * cameraToWorld) * ndcFromRasterM;
+  const glm::dmat4 rasterToCamera = rasterToCameraOf(current, ndcFromRasterM);
   const glm::dvec4 a = rasterToCamera * glm::dvec4(position, 0.25, 1.0);
   const glm::dvec4 b = rasterToCamera * glm::dvec4(position, 0.75, 1.0);
   const glm::dvec3 nearPoint = glm::dvec3(a) / a.w, farPoint = glm::dvec3(b) / b.w;
