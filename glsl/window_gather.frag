@@ -477,6 +477,10 @@ int gAgreeingSources;
 // between frames), pooled over t's own samples and each source weighed so far: the noise a
 // source's mean is tested against.
 float gWithin, gWithinWeight;
+// Sampling noise's spread differs from source to source by a factor of ten and more (four
+// samples against t's nine); an edge's against a flat pixel's by far more (blades and contact
+// at 1080p: 64 keeps a noisy moving box's sources, docs/TUNING.md "The chains' spread").
+const float kMovingSpreadCap = 64.0;
 #if CHAINS
 // Chains of the pixel's moving surface: where it is in the frame behind (t-1, t-2, ...) and
 // ahead (t+1, ...) of the one processed last.
@@ -630,7 +634,14 @@ void gatherSource(int k, bool withChains) {
 #endif
     gWeight += agreement * frameWeight * gSourceWeight;
     gDisagreeing += (1.0 - agreement) * gSourceWeight;
-    gWithin += gSourceLumaSquares - gSourceWeight * mean * mean;
+    // Pooled for the farther sources' tests. Where the pixel has a moving sample, a source's
+    // spread counts up to kMovingSpreadCap times what is pooled so far: a chain whose block
+    // straddles an edge the pixel does not have (a step astray on a tumbling object) brings
+    // the spread of two colours, not the pixel's noise, and would loosen the test for every
+    // farther frame until a mostly wrong block passed (docs/TUNING.md, "The chains' spread").
+    float spread = gSourceLumaSquares - gSourceWeight * mean * mean;  // weight x variance
+    float cap = gSourceWeight * (kMovingSpreadCap * max(gWithin / gWithinWeight, 0.0) + 1e-6);
+    gWithin += gAnyMoving ? min(spread, cap) : spread;
     gWithinWeight += gSourceWeight;
     gSettling = gSettling && all(lessThanEqual(abs(gSourceSum / gSourceWeight - gOwnMean),
                                                gSettleTolerance));

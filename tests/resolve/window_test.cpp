@@ -410,6 +410,34 @@ TEST_F(WindowTest, AnObjectRevealingTheBackgroundLeavesNoGhost) {
   for (int x : {21, 24, 26}) EXPECT_NEAR(out.at(x, 8)[0], 1.0f, 0.02f) << "x " << x;
 }
 
+// A box of two colours (1 left, 4 right of its middle) moving 2 px a frame, whose colours
+// drift from where its vectors carry them in the far frames (as a step of a chain astray on a
+// tumbling object lands): the border is 2.5 px left of where the vectors put it three and more
+// frames behind frame 6, 4 px left three and more ahead. Pixel 19's chains land on the border
+// behind (a block of both colours) and on the right colour ahead.
+Scene boxWithDriftingColours() {
+  Scene scene;
+  scene.trace = [](int frame, double x, double, double& movesX) {
+    const double left = 4.0 + 2.0 * frame;
+    if (x < left || x >= left + 12.0) return Hit{0.2f, 10.0};
+    movesX = 2.0 * 1.0 / kFocal;  // 2 px at depth 1
+    const double drift = frame <= 3 ? -2.5 : (frame >= 9 ? -4.0 : 0.0);
+    return Hit{x < left + 6.0 + drift ? 1.0f : 4.0f, 1.0};
+  };
+  return scene;
+}
+
+// The block of two colours behind is rejected by the colour test, but its spread, pooled as
+// the pixel's noise, loosened the test for the frames ahead until their wrong colour passed:
+// specks of the other colour inside a tumbling cube's squares at 1080p (docs/TUNING.md, "The
+// chains' spread").
+TEST_F(WindowTest, AChainsBlockAcrossAnEdgeDoesNotLetTheFartherFramesWrongColourIn) {
+  const Scene scene = boxWithDriftingColours();
+  const int frame = 6;  // the box covers x 16..28, its colours meet at 22
+  const Image out = resolve(scene, frame, windowOptions(4));
+  for (int y = 2; y < kHeight - 2; ++y) EXPECT_NEAR(out.at(19, y)[0], 1.0f, 0.02f) << "y " << y;
+}
+
 // The window's first frame has no previous frame to check its vectors against: the camera
 // carries each sample into the next frame instead. The box's trailing 2 px there are backdrop
 // in the next frame, which cannot vouch for them; taken for static, they were carried to t
