@@ -129,6 +129,13 @@ uniform bool uAdaptive;
 // group of pixels has). Never the tile test's draw: its statistics need every source.
 uniform float uSettle;
 uniform int uSettleSources;
+// Near a moving object, a pixel that gathered under uOwnFallbackGathered of weight from the
+// other frames (a contact shadow moving with the object: the region test leaves the floor's
+// other frames out) takes t's 3x3 samples of its own surface again under a 1 px Gaussian, up
+// to uOwnFallback of weight: fewer of the render's noisy samples alone decide it.
+uniform float uOwnFallback;
+uniform float uOwnFallbackGathered;
+const float kOwnFallbackSigma = 1.0;
 // The tile test (--window-near, resolve/window_tiles): how far each side of the window reaches,
 // in frames, per tile of uTileSize pixels (R behind, G ahead), filtered between tile centres so
 // that the window changes smoothly across tiles; a frame at a fraction of the reach counts
@@ -861,6 +868,33 @@ void main() {
     } while (k < uSourceCount && (gBehindOpen || gAheadOpen));
   }
 
+#if !TILE_STATS && CHAINS
+  // t's own samples again, wider (uOwnFallback), where the pixel gathered little beside a moving
+  // object (none without chains: t has no moving sample then). One surface only (a 3x3 across
+  // two is left as it is): the samples on the plane of the 3x3's depths and of the centre's
+  // kind (moving or static), so neither a box's base nor the floor it stands on lends the
+  // other its colour.
+  float gathered = gWeight - gOwnWeight - uReconstructionWeight;
+  float fallback = gNearMoving && !gTwoSurfaces
+                       ? uOwnFallback * clamp(1.0 - gathered / uOwnFallbackGathered, 0.0, 1.0)
+                       : 0.0;
+  vec2 slope = 0.5 * vec2(depths[5] - depths[3], depths[7] - depths[1]);
+  for (int i = 0; i < 9; ++i) {
+    ivec2 step = ivec2(i % 3 - 1, i / 3 - 1);
+    ivec2 wanted = pixel + step;
+    ivec2 n = clamp(wanted, ivec2(0), gSize - 1);
+    float predicted = depths[4] + dot(slope, vec2(step));
+    bool same = wanted == n && (signedDepths[i] < 0.0) == (signedDepths[4] < 0.0) &&
+                abs(depths[i] - predicted) <= gSplit * predicted;
+    vec2 offset = vec2(n) + 0.5 + uTargetJitter - gPosition;
+    float w = same ? fallback * spatialWeight(offset, kOwnFallbackSigma) : 0.0;
+    vec4 colour = ringSample(n, uTargetLayer).colour;
+    addSample(colour, w);
+    ADD_TO_QUADRANTS(gQuadrants, colour, w, offset)
+    ADD_PASSES(gPassSum, n, uTargetPassLayer, w)
+    ADD_CRYPTO(n, uTargetPassLayer, w, false, offset)
+  }
+#endif
 #if TILE_STATS
   outStats[0] = vec4(gStatsWords[0]);
   outStats[1] = vec4(gStatsWords[1]);

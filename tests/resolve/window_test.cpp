@@ -736,6 +736,52 @@ TEST_F(WindowTest, TheRegionTestTellsAFaintShadowFromAGradient) {
   EXPECT_LT(testedError, 0.5 * untestedError) << testedError << " and " << untestedError;
 }
 
+// A box moving 4 px a frame over a still backdrop (lit: 1), with a shadow 5 px wide beside it
+// that moves with it, rendered as a noisy render samples it: each sample 0 or 0.4 at random
+// (mean 0.2). The shadow's other frames saw the lit backdrop there and are left out.
+Scene boxWithNoisyShadow() {
+  Scene scene;
+  scene.trace = [](int frame, double x, double y, double& movesX) {
+    const double left = -8.0 + 4.0 * frame;
+    if (x >= left && x < left + 8.0) {
+      movesX = 4.0 * 1.0 / kFocal;  // 4 px at depth 1
+      return Hit{0.5f, 1.0};
+    }
+    if (x < left + 8.0 || x >= left + 13.0) return Hit{1.0f, 10.0};
+    std::uint32_t h = std::uint32_t(std::floor(x * 1024.0)) * 73856093u ^
+                      std::uint32_t(std::floor(y * 1024.0)) * 19349663u ^
+                      std::uint32_t(frame + 100) * 83492791u;
+    h ^= h >> 13;
+    h *= 0x5bd1e995u;
+    h ^= h >> 15;
+    return Hit{(h & 1u) != 0u ? 0.4f : 0.0f, 10.0};
+  };
+  return scene;
+}
+
+// Only t's own samples can tell the shadow: the fallback takes more of them, so less of their
+// noise is left (docs/TUNING.md, "A contact shadow's own samples").
+TEST_F(WindowTest, AShadowMovingWithItsObjectTakesMoreOfItsOwnSamples) {
+  const Scene scene = boxWithNoisyShadow();
+  const int frame = 6;  // the box covers x 16..24, its shadow 24..29
+  ResolveOptions options = windowOptions(4);
+  ASSERT_GT(options.window.ownFallback, 0.0f);  // the default
+  const auto meanError = [&](const Image& out) {
+    double sum = 0.0;
+    int count = 0;
+    for (int y = 2; y < kHeight - 2; ++y) {
+      for (int x = 26; x <= 27; ++x, ++count) sum += std::fabs(out.at(x, y)[0] - 0.2);
+    }
+    return sum / count;
+  };
+  const double withFallback = meanError(resolve(scene, frame, options));
+  options.window.ownFallback = 0.0f;
+  const double without = meanError(resolve(scene, frame, options));
+  EXPECT_LT(withFallback, 0.6 * without) << withFallback << " against " << without;
+  // And the lit frames stay out: the shadow is not brightened toward 1.
+  EXPECT_LT(withFallback, 0.1);
+}
+
 // Away from moving samples the looser test holds: on the noisy floor without its block, the
 // near-moving tolerance changes no bit.
 TEST_F(WindowTest, TheNearMovingToleranceLeavesAStillShotAlone) {

@@ -144,6 +144,14 @@ struct WindowOptions {
   // never settle. 0: off (docs/PERFORMANCE.md, "Settled pixels").
   static constexpr int kSettleSources = 4;
   float settle = 0.005f;
+  // Beside a moving object (where the region test is stricter, --window-region-near-moving) a
+  // pixel whose other frames were left out, as the floor in a contact shadow that moves with
+  // the object, had only its nearest own samples: the render's noise, as it was. Such a pixel
+  // also takes t's 3x3 samples of its own surface under a wider Gaussian (1 px), with this
+  // weight where it gathered nothing from other frames, falling to none at
+  // kOwnFallbackGathered. 0: off (docs/TUNING.md, "A contact shadow's own samples").
+  static constexpr float kOwnFallbackGathered = 2.0f;
+  float ownFallback = 1.5f;
 };
 
 enum class Reconstruction { Centre, BlackmanHarris, Lanczos2 };

@@ -208,6 +208,12 @@ std::vector<Entry> makeEntries() {
        "the time (0: off)"},
       0.0f, 1.0f, &WindowOptions::settle));
   entries.push_back(windowNumberOption(
+      {"window-own-fallback", "Mode", "", "", "window mode: near a moving object, weight of a "
+       "pixel's own 3x3 samples of its surface under a 1 px Gaussian where it gathered little "
+       "from other frames (a contact shadow moving with the object): less of the render's noise "
+       "(0: off)"},
+      0.0f, kNoLimit, &WindowOptions::ownFallback));
+  entries.push_back(windowNumberOption(
       {"window-static-tolerance", "Mode", "", "", "window mode: pixels within which a sample's "
        "vector must agree with the camera for exact camera reprojection; others follow their "
        "vectors"},

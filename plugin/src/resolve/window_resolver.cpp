@@ -74,6 +74,7 @@ void validateOptions(const ResolveOptions& o) {
     throw Error("window region tolerance near moving objects must be >= 0");
   }
   if (!(w.settle >= 0.0f && w.settle <= 1.0f)) throw Error("window settle must be in [0, 1]");
+  if (!(w.ownFallback >= 0.0f)) throw Error("window own fallback must be >= 0");
   if (!(w.staticTolerance >= 0.0f)) throw Error("window static tolerance must be >= 0");
   if (!(w.reconstructionWeight >= 0.0f)) throw Error("window reconstruction weight must be >= 0");
   if (w.nearRadius < 0) throw Error("window near radius must be >= 0");
@@ -802,6 +803,8 @@ struct WindowResolver::Impl {
       p.set("uThinSearch", thinSearch() ? 1 : 0);
       p.set("uSettle", options.window.settle);
       p.set("uSettleSources", WindowOptions::kSettleSources);
+      p.set("uOwnFallback", options.window.ownFallback);
+      p.set("uOwnFallbackGathered", WindowOptions::kOwnFallbackGathered);
       p.set("uSurroundings", surroundingsUnit());
       p.set("uStrata", options.window.strata ? 1 : 0);
       p.set("uAdaptive", options.window.adaptive ? 1 : 0);
