@@ -695,11 +695,9 @@ void main() {
   gStrataShares = uHasStrataShares ? texelFetch(uStrataShares, pixel, 0) : vec4(1.0);
 #endif
 #if PASS_GROUPS > 0
-  vec4 filteredPasses[PASS_GROUPS];
-  for (int g = 0; g < PASS_GROUPS; ++g) {
-    gPassSum[g] = vec4(0.0);
-    filteredPasses[g] = vec4(0.0);
-  }
+  // t's own samples' pass values are added after the sources, fetched once for every weight
+  // they take (below).
+  for (int g = 0; g < PASS_GROUPS; ++g) gPassSum[g] = vec4(0.0);
 #endif
   float depths[9];
   float signedDepths[9];
@@ -732,8 +730,6 @@ void main() {
       float w = wanted == n ? spatialWeight(vec2(n) + 0.5 + uTargetJitter - gPosition, uSigma)
                             : 0.0;
       float y = decisionLuma(colour);
-      ADD_PASSES_TWICE(gPassSum, w, filteredPasses, uReconstruction[3 * (dy + 1) + dx + 1], n,
-                       uTargetPassLayer)
       ADD_CRYPTO(n, uTargetPassLayer, w, false, vec2(n) + 0.5 + uTargetJitter - gPosition)
       ownWeight += w;
       ownSum += w * colour;
@@ -760,9 +756,6 @@ void main() {
   // At the pixel centre: a quarter in each quadrant.
   Quadrants reconstruction = Quadrants(filtered, filtered, filtered, filtered, vec4(1.0));
   addQuadrants(gQuadrants, reconstruction, 0.25 * uReconstructionWeight);
-#endif
-#if PASS_GROUPS > 0
-  for (int g = 0; g < PASS_GROUPS; ++g) gPassSum[g] += uReconstructionWeight * filteredPasses[g];
 #endif
 
   // The surfaces the pixel may be looking at: the 3x3's near one and, when it spans two
@@ -868,31 +861,41 @@ void main() {
     } while (k < uSourceCount && (gBehindOpen || gAheadOpen));
   }
 
-#if !TILE_STATS && CHAINS
-  // t's own samples again, wider (uOwnFallback), where the pixel gathered little beside a moving
-  // object (none without chains: t has no moving sample then). One surface only (a 3x3 across
-  // two is left as it is): the samples on the plane of the 3x3's depths and of the centre's
-  // kind (moving or static), so neither a box's base nor the floor it stands on lends the
-  // other its colour.
+#if !TILE_STATS
+  // t's own 3x3 once more, after the sources. Where the pixel gathered little beside a moving
+  // object (uOwnFallback; none without chains: t has no moving sample then), its samples of
+  // its own surface again, under a 1 px Gaussian: one surface only (a 3x3 across two is left
+  // as it is), the samples on the plane of the 3x3's depths and of the centre's kind (moving
+  // or static), so neither a box's base nor the floor it stands on lends the other its colour.
+  // And the pass values of all nine, each fetched once for every weight it takes: its own, the
+  // reconstruction's and the fallback's (a second fetch of six groups a sample cost the pass
+  // draws 8 %).
+  float fallback = 0.0;
+#if CHAINS
   float gathered = gWeight - gOwnWeight - uReconstructionWeight;
-  float fallback = gNearMoving && !gTwoSurfaces
-                       ? uOwnFallback * clamp(1.0 - gathered / uOwnFallbackGathered, 0.0, 1.0)
-                       : 0.0;
+  fallback = gNearMoving && !gTwoSurfaces
+                 ? uOwnFallback * clamp(1.0 - gathered / uOwnFallbackGathered, 0.0, 1.0)
+                 : 0.0;
+#endif
   vec2 slope = 0.5 * vec2(depths[5] - depths[3], depths[7] - depths[1]);
   for (int i = 0; i < 9; ++i) {
     ivec2 step = ivec2(i % 3 - 1, i / 3 - 1);
     ivec2 wanted = pixel + step;
     ivec2 n = clamp(wanted, ivec2(0), gSize - 1);
+    vec2 offset = vec2(n) + 0.5 + uTargetJitter - gPosition;
     float predicted = depths[4] + dot(slope, vec2(step));
     bool same = wanted == n && (signedDepths[i] < 0.0) == (signedDepths[4] < 0.0) &&
                 abs(depths[i] - predicted) <= gSplit * predicted;
-    vec2 offset = vec2(n) + 0.5 + uTargetJitter - gPosition;
     float w = same ? fallback * spatialWeight(offset, kOwnFallbackSigma) : 0.0;
+#if CHAINS
     vec4 colour = ringSample(n, uTargetLayer).colour;
     addSample(colour, w);
     ADD_TO_QUADRANTS(gQuadrants, colour, w, offset)
-    ADD_PASSES(gPassSum, n, uTargetPassLayer, w)
     ADD_CRYPTO(n, uTargetPassLayer, w, false, offset)
+#endif
+    float own = wanted == n ? spatialWeight(offset, uSigma) : 0.0;
+    ADD_PASSES(gPassSum, n, uTargetPassLayer,
+               own + uReconstructionWeight * uReconstruction[i] + w)
   }
 #endif
 #if TILE_STATS
