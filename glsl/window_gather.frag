@@ -766,8 +766,9 @@ void main() {
   // at a grazing angle, a wall seen obliquely.
   float split = max(uDepthTolerance, 0.01);
   bool twoSurfaces = !isinf(gNearest) && gFarthest > gNearest * (1.0 + split);
+  // The 3x3's depth plane through its centre (also the own-sample fallback's surface, below).
+  vec2 slope = 0.5 * vec2(depths[5] - depths[3], depths[7] - depths[1]);
   if (twoSurfaces && !isinf(gFarthest)) {
-    vec2 slope = 0.5 * vec2(depths[5] - depths[3], depths[7] - depths[1]);
     float offPlane = 0.0;
     for (int i = 0; i < 9; ++i) {
       vec2 step = vec2(float(i % 3 - 1), float(i / 3 - 1));
@@ -877,7 +878,6 @@ void main() {
                  ? uOwnFallback * clamp(1.0 - gathered / uOwnFallbackGathered, 0.0, 1.0)
                  : 0.0;
 #endif
-  vec2 slope = 0.5 * vec2(depths[5] - depths[3], depths[7] - depths[1]);
   for (int i = 0; i < 9; ++i) {
     ivec2 step = ivec2(i % 3 - 1, i / 3 - 1);
     ivec2 wanted = pixel + step;
