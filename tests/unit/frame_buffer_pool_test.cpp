@@ -3,6 +3,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
+#include <fstream>
+#include <sstream>
+#include <string>
 #include <vector>
 
 #include "util/image.h"
@@ -88,6 +92,67 @@ TEST_F(FrameBufferPoolTest, ImagesOfAFrameSizeReuseTheSameMemoryZeroed) {
   EXPECT_EQ(second.pixels.data(), firstPixels);
   EXPECT_EQ(second.pixels[17], 0.0f);  // a new image starts at zero, as a std::vector does
 }
+
+// The mapping that starts at `address` as /proc/self/smaps describes it: its size in KiB and
+// its VmFlags ("hg": advised to use huge pages); size 0 if there is none.
+struct Mapping {
+  std::size_t kib = 0;
+  std::string flags;
+};
+Mapping mappingAt(const void* address) {
+  std::ifstream smaps("/proc/self/smaps");
+  std::ostringstream start;
+  start << std::hex << reinterpret_cast<std::uintptr_t>(address) << '-';
+  Mapping found;
+  bool inside = false;
+  for (std::string line; std::getline(smaps, line);) {
+    const bool header = line.find('-') != std::string::npos && line.find(':') > line.find(' ');
+    if (header) inside = line.rfind(start.str(), 0) == 0;
+    if (!inside) continue;
+    if (line.rfind("Size:", 0) == 0) found.kib = std::stoul(line.substr(5));
+    if (line.rfind("VmFlags:", 0) == 0) found.flags = line.substr(8) + " ";
+  }
+  return found;
+}
+
+#if !defined(__SANITIZE_ADDRESS__)
+bool hugePagesOnRequest() {
+  std::ifstream mode("/sys/kernel/mm/transparent_hugepage/enabled");
+  std::string modes;
+  std::getline(mode, modes);
+  return !modes.empty() && modes.find("[never]") == std::string::npos;
+}
+
+// A buffer the pool will not keep (every frame's are new) is mapped in whole huge pages from a
+// huge page's boundary, advised to use them (one page fault a 2 MiB page, not 512), and
+// unmapped when freed.
+TEST_F(FrameBufferPoolTest, ABufferNotKeptIsMappedInHugePagesAndUnmappedWhenFreed) {
+  const std::size_t bytes = (std::size_t(3) << 20) + 5;
+  FrameBuffersNotKept notKept;
+  auto* buffer = static_cast<unsigned char*>(takeFrameBuffer(bytes));
+  EXPECT_EQ(reinterpret_cast<std::uintptr_t>(buffer) % (std::size_t(2) << 20), 0u);
+  buffer[0] = 1;
+  buffer[bytes - 1] = 2;
+  const Mapping mapped = mappingAt(buffer);
+  EXPECT_EQ(mapped.kib, std::size_t(4) << 10);  // 3 MiB and 5 bytes: two huge pages
+  if (hugePagesOnRequest()) {
+    EXPECT_NE(mapped.flags.find(" hg "), std::string::npos) << mapped.flags;
+  }
+  giveBackFrameBuffer(buffer, bytes);
+  EXPECT_EQ(mappingAt(buffer).kib, 0u);
+}
+
+// A buffer the pool keeps faults once however many frames reuse it, and runs that keep theirs
+// were slower with huge pages: it is left to ordinary pages.
+TEST_F(FrameBufferPoolTest, ABufferThePoolKeepsIsNotAdvisedToUseHugePages) {
+  auto* buffer = static_cast<unsigned char*>(takeFrameBuffer(kFrameBytes));
+  buffer[0] = 1;
+  const Mapping mapped = mappingAt(buffer);
+  EXPECT_GE(mapped.kib, kFrameBytes >> 10);
+  EXPECT_EQ(mapped.flags.find(" hg "), std::string::npos) << mapped.flags;
+  giveBackFrameBuffer(buffer, kFrameBytes);
+}
+#endif
 
 }  // namespace
 }  // namespace taa

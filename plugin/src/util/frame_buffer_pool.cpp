@@ -1,6 +1,9 @@
 #include "util/frame_buffer_pool.h"
 
+#include <sys/mman.h>
+
 #include <algorithm>
+#include <cstdint>
 #include <deque>
 #include <mutex>
 #include <new>
@@ -16,6 +19,55 @@ constexpr std::size_t kPooledBufferBytes = std::size_t(1) << 20;
 constexpr std::size_t kMaxKeptBuffers = 16;
 constexpr std::size_t kMaxKeptBytes = std::size_t(1) << 30;
 
+// Frame buffers are mapped from a huge page's boundary (2 MiB on x86-64), and where the pool
+// keeps none (FrameBuffersNotKept) the kernel is asked to back them with huge pages
+// (transparent huge pages in their "madvise" mode, Debian's default): there every frame's
+// buffers are new, every 4 KiB page of them faults on first touch, and a run with every pass of
+// a render (about 400 MB read and as much written a frame) spent a third of its CPU time in
+// those faults and their page clearing on a virtual machine; one fault a huge page instead of
+// 512 took a fifth off its time a frame. Kept buffers fault once, and huge pages made the runs
+// that keep them slower (docs/PERFORMANCE.md, "Huge pages"). Where the kernel has none, or says
+// no, the mapping stays as 4 KiB pages and works as before.
+constexpr std::size_t kHugePageBytes = std::size_t(2) << 20;
+
+std::size_t mappedBytes(std::size_t bytes) {
+  return (bytes + kHugePageBytes - 1) / kHugePageBytes * kHugePageBytes;
+}
+
+// Under AddressSanitizer buffers stay on the heap, where it checks their bounds exactly.
+#if defined(__SANITIZE_ADDRESS__)
+#define TAA_FRAME_BUFFERS_ON_HEAP 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define TAA_FRAME_BUFFERS_ON_HEAP 1
+#endif
+#endif
+
+#ifdef TAA_FRAME_BUFFERS_ON_HEAP
+void* mapFrameBuffer(std::size_t bytes, bool) { return ::operator new(bytes); }
+void unmapFrameBuffer(void* buffer, std::size_t) { ::operator delete(buffer); }
+#else
+void* mapFrameBuffer(std::size_t bytes, bool hugePages) {
+  const std::size_t length = mappedBytes(bytes);
+  // Mapped a huge page longer, then trimmed so that it starts on a huge page's boundary.
+  void* raw = mmap(nullptr, length + kHugePageBytes, PROT_READ | PROT_WRITE,
+                   MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+  if (raw == MAP_FAILED) throw std::bad_alloc();
+  const auto start = reinterpret_cast<std::uintptr_t>(raw);
+  const std::uintptr_t aligned = (start + kHugePageBytes - 1) & ~(kHugePageBytes - 1);
+  if (aligned > start) munmap(raw, aligned - start);
+  const std::size_t tail = (start + length + kHugePageBytes) - (aligned + length);
+  if (tail > 0) munmap(reinterpret_cast<void*>(aligned + length), tail);
+  void* buffer = reinterpret_cast<void*>(aligned);
+#ifdef MADV_HUGEPAGE
+  if (hugePages) madvise(buffer, length, MADV_HUGEPAGE);  // a refusal changes only the speed
+#endif
+  return buffer;
+}
+
+void unmapFrameBuffer(void* buffer, std::size_t bytes) { munmap(buffer, mappedBytes(bytes)); }
+#endif
+
 struct KeptBuffer {
   void* buffer;
   std::size_t bytes;
@@ -24,6 +76,7 @@ struct KeptBuffer {
 class Pool {
  public:
   void* take(std::size_t bytes) {
+    bool keeping;
     {
       std::lock_guard<std::mutex> lock(mutex_);
       auto same = std::find_if(kept_.rbegin(), kept_.rend(),
@@ -34,8 +87,9 @@ class Pool {
         kept_.erase(std::next(same).base());
         return buffer;
       }
+      keeping = notKept_ == 0;
     }
-    return ::operator new(bytes);
+    return mapFrameBuffer(bytes, /*hugePages=*/!keeping);
   }
 
   void giveBack(void* buffer, std::size_t bytes) {
@@ -51,7 +105,7 @@ class Pool {
         kept_.pop_front();
       }
     }
-    for (const KeptBuffer& k : evicted) ::operator delete(k.buffer);
+    for (const KeptBuffer& k : evicted) unmapFrameBuffer(k.buffer, k.bytes);
   }
 
   void release() {
@@ -61,7 +115,7 @@ class Pool {
       all.swap(kept_);
       keptBytes_ = 0;
     }
-    for (const KeptBuffer& k : all) ::operator delete(k.buffer);
+    for (const KeptBuffer& k : all) unmapFrameBuffer(k.buffer, k.bytes);
   }
 
   std::size_t keptBytes() {
