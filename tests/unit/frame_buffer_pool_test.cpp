@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "util/address_sanitizer.h"
 #include "util/image.h"
 
 namespace taa {
@@ -93,6 +94,7 @@ TEST_F(FrameBufferPoolTest, ImagesOfAFrameSizeReuseTheSameMemoryZeroed) {
   EXPECT_EQ(second.pixels[17], 0.0f);  // a new image starts at zero, as a std::vector does
 }
 
+#if !TAA_ADDRESS_SANITIZER  // buffers stay on the heap there
 // The mapping that starts at `address` as /proc/self/smaps describes it: its size in KiB and
 // its VmFlags ("hg": advised to use huge pages); size 0 if there is none.
 struct Mapping {
@@ -115,7 +117,6 @@ Mapping mappingAt(const void* address) {
   return found;
 }
 
-#if !defined(__SANITIZE_ADDRESS__)
 bool hugePagesOnRequest() {
   std::ifstream mode("/sys/kernel/mm/transparent_hugepage/enabled");
   std::string modes;

@@ -1,5 +1,7 @@
 #include "util/frame_buffer_pool.h"
 
+#include "util/address_sanitizer.h"
+
 #include <sys/mman.h>
 
 #include <algorithm>
@@ -25,9 +27,9 @@ constexpr std::size_t kMaxKeptBytes = std::size_t(1) << 30;
 // buffers are new, every 4 KiB page of them faults on first touch, and a run with every pass of
 // a render (about 400 MB read and as much written a frame) spent a third of its CPU time in
 // those faults and their page clearing on a virtual machine; one fault a huge page instead of
-// 512 took a fifth off its time a frame. Kept buffers fault once, and huge pages made the runs
-// that keep them slower (docs/PERFORMANCE.md, "Huge pages"). Where the kernel has none, or says
-// no, the mapping stays as 4 KiB pages and works as before.
+// 512 took about a quarter off its time a frame. Kept buffers fault once, and huge pages made
+// the runs that keep them slower (docs/PERFORMANCE.md, "Huge pages"). Where the kernel has
+// none, or says no, the mapping stays as 4 KiB pages and works as before.
 constexpr std::size_t kHugePageBytes = std::size_t(2) << 20;
 
 std::size_t mappedBytes(std::size_t bytes) {
@@ -35,15 +37,7 @@ std::size_t mappedBytes(std::size_t bytes) {
 }
 
 // Under AddressSanitizer buffers stay on the heap, where it checks their bounds exactly.
-#if defined(__SANITIZE_ADDRESS__)
-#define TAA_FRAME_BUFFERS_ON_HEAP 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define TAA_FRAME_BUFFERS_ON_HEAP 1
-#endif
-#endif
-
-#ifdef TAA_FRAME_BUFFERS_ON_HEAP
+#if TAA_ADDRESS_SANITIZER
 void* mapFrameBuffer(std::size_t bytes, bool) { return ::operator new(bytes); }
 void unmapFrameBuffer(void* buffer, std::size_t) { ::operator delete(buffer); }
 #else
@@ -56,8 +50,7 @@ void* mapFrameBuffer(std::size_t bytes, bool hugePages) {
   const auto start = reinterpret_cast<std::uintptr_t>(raw);
   const std::uintptr_t aligned = (start + kHugePageBytes - 1) & ~(kHugePageBytes - 1);
   if (aligned > start) munmap(raw, aligned - start);
-  const std::size_t tail = (start + length + kHugePageBytes) - (aligned + length);
-  if (tail > 0) munmap(reinterpret_cast<void*>(aligned + length), tail);
+  munmap(reinterpret_cast<void*>(aligned + length), start + kHugePageBytes - aligned);
   void* buffer = reinterpret_cast<void*>(aligned);
 #ifdef MADV_HUGEPAGE
   if (hugePages) madvise(buffer, length, MADV_HUGEPAGE);  // a refusal changes only the speed
@@ -76,7 +69,7 @@ struct KeptBuffer {
 class Pool {
  public:
   void* take(std::size_t bytes) {
-    bool keeping;
+    bool hugePages;
     {
       std::lock_guard<std::mutex> lock(mutex_);
       auto same = std::find_if(kept_.rbegin(), kept_.rend(),
@@ -87,9 +80,9 @@ class Pool {
         kept_.erase(std::next(same).base());
         return buffer;
       }
-      keeping = notKept_ == 0;
+      hugePages = notKept_ > 0;  // it will not be kept
     }
-    return mapFrameBuffer(bytes, /*hugePages=*/!keeping);
+    return mapFrameBuffer(bytes, hugePages);
   }
 
   void giveBack(void* buffer, std::size_t bytes) {
