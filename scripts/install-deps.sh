@@ -6,7 +6,7 @@ packages=(
   build-essential cmake pkg-config
   libopenimageio-dev openimageio-tools libopenexr-dev libimath-dev
   libopencolorio-dev
-  libdeflate-dev zlib1g-dev  # taatool's ZIP codec: zlib's one-shot calls on libdeflate
+  libdeflate-dev zlib1g-dev  # ZIP: taatool's codec (zlib's one-shot calls on libdeflate), the chunk reader
   libglm-dev
   nlohmann-json3-dev  # header-only JSON: the camera sidecar
   libgl-dev libegl-dev libegl-mesa0 libosmesa6-dev libgl1-mesa-dri  # headless GL on llvmpipe

@@ -5,9 +5,11 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstring>
+#include <memory>
 
 #include "taa/error.h"
 #include "io/scanline_bands.h"
+#include "io/scanline_chunks.h"
 #include "util/frame_buffer_pool.h"
 
 namespace taa::io {
@@ -97,6 +99,14 @@ void readPartChannels(OIIO::ImageInput& input, const std::string& path, int fram
 
   const std::size_t width = std::size_t(spec.width);
   const int bandRows = rowsPerBand(spec);
+  // Channels in their file types of a ZIP, ZIPS or uncompressed scanline part are decoded from
+  // the chunks (io/scanline_chunks); where that reader declines or fails, OIIO reads the band,
+  // and its errors are the ones reported.
+  const bool anyNative = std::any_of(passes.begin(), passes.end(), [](const Pass& pass) {
+    return pass.format == OIIO::TypeUnknown;
+  });
+  std::unique_ptr<ScanlineChunkReader> chunks =
+      anyNative ? ScanlineChunkReader::open(path, part, spec) : nullptr;
   FrameVector<unsigned char> band;  // a frame-sized buffer: kept for the next frame
   std::vector<float> bandValues;     // a band request's rows (ChannelRequest::band)
   for (const Pass& pass : passes) {
@@ -121,14 +131,19 @@ void readPartChannels(OIIO::ImageInput& input, const std::string& path, int fram
 
     for (int y = spec.y; y < spec.y + spec.height; y += bandRows) {
       const int rows = std::min(bandRows, spec.y + spec.height - y);
+      std::string chunkError;  // unused: OIIO reads the band again and says what is wrong
+      const bool decoded = chunks && pass.format == OIIO::TypeUnknown &&
+                           chunks->readRows(y, rows, begin, end, band.data(), chunkError);
       // OIIO may report a failure only through its error state, so check both.
       // OIIO's OpenEXR reader reads tiled files by tiles only; a band is whole tile rows.
-      const bool ok =
-          spec.tile_height > 0
-              ? input.read_tiles(part, 0, spec.x, spec.x + spec.width, y, y + rows, spec.z,
-                                 spec.z + 1, begin, end, pass.format, band.data())
-              : input.read_scanlines(part, 0, y, y + rows, spec.z, begin, end, pass.format,
-                                     band.data());
+      bool ok = decoded;
+      if (!decoded) {
+        ok = spec.tile_height > 0
+                 ? input.read_tiles(part, 0, spec.x, spec.x + spec.width, y, y + rows, spec.z,
+                                    spec.z + 1, begin, end, pass.format, band.data())
+                 : input.read_scanlines(part, 0, y, y + rows, spec.z, begin, end, pass.format,
+                                        band.data());
+      }
       if (!ok || input.has_error()) {
         std::string reason = input.geterror();
         if (reason.empty()) reason = "unknown error";

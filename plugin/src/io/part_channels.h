@@ -28,8 +28,9 @@ struct ChannelRequest {
 // chunk of the part again (ZIP, PIZ, DWA compress all channels of a chunk together), so the
 // part is decoded once: rows in bands a whole number of chunks or tiles tall, the channels
 // from the lowest to the highest asked for in the file's own types, each request's copied out
-// (half widened to float where a request asks). A request for a channel stored in another type
-// (uint) is read on its own, converted by OIIO as before. Throws taa::Error naming `path`,
+// (half widened to float where a request asks); a ZIP, ZIPS or uncompressed scanline part's
+// bands come from its chunks directly (io/scanline_chunks), any other's from OIIO. A request for
+// a channel stored in another type (uint) is read on its own, converted by OIIO as before. Throws taa::Error naming `path`,
 // `frame` and the channels when the file cannot be decoded (truncated, corrupt).
 void readPartChannels(OIIO::ImageInput& input, const std::string& path, int frame, int part,
                       const OIIO::ImageSpec& spec, const std::vector<ChannelRequest>& requests);
