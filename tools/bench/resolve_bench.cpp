@@ -9,8 +9,6 @@
 // The outputs go to -o's pattern. Linked with taatool's ZIP codec (fast_zlib), as taatool is.
 // docs/PERFORMANCE.md quotes it; whole runs, with the stages overlapped, are timed by
 // scripts/benchmark.sh.
-#include <sys/resource.h>
-
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -30,15 +28,11 @@
 #include "resolve/resolver.h"
 #include "resolve/window_resolver.h"
 #include "taa/error.h"
+#include "process_time.h"
 
 namespace {
 
-double cpuSeconds() {
-  rusage usage{};
-  getrusage(RUSAGE_SELF, &usage);
-  auto seconds = [](const timeval& t) { return double(t.tv_sec) + 1e-6 * double(t.tv_usec); };
-  return seconds(usage.ru_utime) + seconds(usage.ru_stime);
-}
+using taa::bench::cpuSeconds;
 
 // "<cpu> ms CPU (<wall> ms wall)" per run of `work`, run `count` times.
 std::string timePerRun(int count, const std::function<void(int)>& work) {
