@@ -30,9 +30,9 @@ std::string readText(const fs::path& path) {
 
 }  // namespace
 
-fs::path freshTestFolder() {
+fs::path freshTestFolderIn(const fs::path& root) {
   const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  const fs::path folder = fs::path(TAA_TEST_TMPDIR) / info->name();
+  const fs::path folder = root / info->name();
   fs::remove_all(folder);
   fs::create_directories(folder);
   return folder;

@@ -14,8 +14,14 @@ struct ToolRun {
   std::string out, err;
 };
 
-// A fresh folder for the running test: TAA_TEST_TMPDIR/<test name>, emptied first.
-std::filesystem::path freshTestFolder();
+// A fresh folder for the running test: <root>/<test name>, emptied first.
+std::filesystem::path freshTestFolderIn(const std::filesystem::path& root);
+#ifdef TAA_TEST_TMPDIR
+// The same under this test program's TAA_TEST_TMPDIR (taa_add_gtest defines it). Inline, so the
+// folder is the including program's own: the runner is compiled once, into a library every
+// program links.
+inline std::filesystem::path freshTestFolder() { return freshTestFolderIn(TAA_TEST_TMPDIR); }
+#endif
 
 // The taatool the tests run: TAA_TAATOOL_PATH, unless the environment variable of that name
 // gives another (to run a suite against another build).

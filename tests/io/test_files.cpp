@@ -10,10 +10,10 @@
 namespace taa::test {
 namespace fs = std::filesystem;
 
-std::string scratchFolder() {
+std::string scratchFolderIn(const std::string& root) {
   const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
   const fs::path folder =
-      fs::path(TAA_TEST_TMPDIR) / (std::string(info->test_suite_name()) + "." + info->name());
+      fs::path(root) / (std::string(info->test_suite_name()) + "." + info->name());
   fs::remove_all(folder);
   fs::create_directories(folder);
   return folder.string();

@@ -11,8 +11,14 @@
 
 namespace taa::test {
 
-// An empty folder for the running test: TAA_TEST_TMPDIR/<suite>.<test>, wiped first.
-std::string scratchFolder();
+// An empty folder for the running test: <root>/<suite>.<test>, wiped first.
+std::string scratchFolderIn(const std::string& root);
+#ifdef TAA_TEST_TMPDIR
+// The same under this test program's TAA_TEST_TMPDIR (taa_add_gtest defines it). Inline, so the
+// folder is the including program's own: the helpers are compiled once, into a library every
+// program links.
+inline std::string scratchFolder() { return scratchFolderIn(TAA_TEST_TMPDIR); }
+#endif
 
 // A float spec of width x height with the given channel names, data window at the origin.
 OIIO::ImageSpec makeSpec(int width, int height, const std::vector<std::string>& channels);
