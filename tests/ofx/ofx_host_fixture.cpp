@@ -11,6 +11,7 @@
 
 #include "scenegen/exr_output.h"
 #include "scenegen/scene_library.h"
+#include "taatool_runner.h"
 
 namespace taa::ofxtest {
 
@@ -41,7 +42,7 @@ std::string frameName(int frame) { return std::to_string(10000 + frame).substr(1
 void runTaatoolOnce(const fs::path& dir, const std::string& folder, const std::string& extra) {
   const fs::path out = dir / folder;
   if (fs::exists(out)) return;
-  const std::string command = "env -u OCIO '" + std::string(TAA_TAATOOL_PATH) + "' '" +
+  const std::string command = "env -u OCIO '" + test::taatoolPath() + "' '" +
                               (dir / "beauty.####.exr").string() + "' --depth '" +
                               (dir / "depth.####.exr").string() + "' --motion '" +
                               (dir / "motion.####.exr").string() + "' -d float " + extra +

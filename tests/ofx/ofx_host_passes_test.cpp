@@ -8,6 +8,7 @@
 #include <cstdlib>
 
 #include "ofx_host_fixture.h"
+#include "taatool_runner.h"
 
 namespace taa::ofxtest {
 namespace {
@@ -57,7 +58,7 @@ class OfxHostPassesTest : public OfxHostTest {
          std::vector<std::pair<std::string, std::string>>{
              {"out", ""}, {"out-cryptomatte", " --aov 'Crypto*=cryptomatte' --aov '*=drop'"}}) {
       const std::string command =
-          "env -u OCIO '" + std::string(TAA_TAATOOL_PATH) + "' '" +
+          "env -u OCIO '" + test::taatoolPath() + "' '" +
           (in / "beauty.####.exr").string() + "' --depth '" + (dir_ / "depth.####.exr").string() +
           "' --motion '" + (dir_ / "motion.####.exr").string() +
           "' -d float --mode window --window 2 -o '" + (in / out / "out.####.exr").string() +
