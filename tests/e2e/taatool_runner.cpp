@@ -5,6 +5,7 @@
 #include <spawn.h>
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
@@ -48,7 +49,7 @@ ToolRun runTaatool(const std::vector<std::string>& args, const fs::path& scratch
 }
 
 ToolRun runProgram(const std::string& program, const std::vector<std::string>& args,
-                   const fs::path& scratch) {
+                   const fs::path& scratch, const std::vector<std::string>& unset) {
   // Spawned directly, no shell: arguments reach the program as they are, whatever they hold.
   const fs::path out = scratch / "stdout.txt", err = scratch / "stderr.txt";
   posix_spawn_file_actions_t files;
@@ -59,8 +60,18 @@ ToolRun runProgram(const std::string& program, const std::vector<std::string>& a
   std::vector<char*> argv = {const_cast<char*>(program.c_str())};
   for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
   argv.push_back(nullptr);
+  std::vector<char*> environment;
+  for (char** variable = environ; *variable; ++variable) {
+    const std::string entry = *variable;
+    const std::string name = entry.substr(0, entry.find('='));
+    if (std::find(unset.begin(), unset.end(), name) == unset.end()) {
+      environment.push_back(*variable);
+    }
+  }
+  environment.push_back(nullptr);
   pid_t pid = 0;
-  const int failed = posix_spawnp(&pid, program.c_str(), &files, nullptr, argv.data(), environ);
+  const int failed =
+      posix_spawnp(&pid, program.c_str(), &files, nullptr, argv.data(), environment.data());
   posix_spawn_file_actions_destroy(&files);
   ToolRun run;
   if (failed != 0) {

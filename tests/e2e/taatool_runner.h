@@ -30,9 +30,11 @@ std::string taatoolPath();
 // Runs taatool with `args` and no standard input; stdout and stderr are captured through files
 // in `scratch`.
 ToolRun runTaatool(const std::vector<std::string>& args, const std::filesystem::path& scratch);
-// The same for any program.
+// The same for any program; the variables named in `unset` are taken out of its environment
+// (the rest of this process's environment is passed on).
 ToolRun runProgram(const std::string& program, const std::vector<std::string>& args,
-                   const std::filesystem::path& scratch);
+                   const std::filesystem::path& scratch,
+                   const std::vector<std::string>& unset = {});
 
 // Expects a failure as taatool reports one: exit status 1, stderr's last line starting
 // "taatool ERROR: " (progress lines may come before it), and each of `fragments` in it.

@@ -38,19 +38,25 @@ Image readChannels(const std::string& path, const std::vector<std::string>& name
 
 std::string frameName(int frame) { return std::to_string(10000 + frame).substr(1); }
 
-// taatool on the files in `dir` with `extra` arguments into dir/folder, once per process.
-void runTaatoolOnce(const fs::path& dir, const std::string& folder, const std::string& extra) {
-  const fs::path out = dir / folder;
-  if (fs::exists(out)) return;
-  const std::string command = "env -u OCIO '" + test::taatoolPath() + "' '" +
-                              (dir / "beauty.####.exr").string() + "' --depth '" +
-                              (dir / "depth.####.exr").string() + "' --motion '" +
-                              (dir / "motion.####.exr").string() + "' -d float " + extra +
-                              " -o '" + (out / "out.####.exr").string() + "' -q";
-  if (std::system(command.c_str()) != 0) throw std::runtime_error("taatool failed: " + command);
-}
-
 }  // namespace
+
+void OfxHostTest::runTaatool(const fs::path& beauty, const fs::path& out,
+                             const std::vector<std::string>& extra) {
+  std::vector<std::string> args = {beauty.string(),
+                                   "--depth",  (dir_ / "depth.####.exr").string(),
+                                   "--motion", (dir_ / "motion.####.exr").string(),
+                                   "-d",       "float"};
+  args.insert(args.end(), extra.begin(), extra.end());
+  args.insert(args.end(), {"-o", (out / "out.####.exr").string(), "-q"});
+  const fs::path scratch = out.string() + ".log";
+  fs::create_directories(scratch);
+  // $OCIO unset: the OCIO tests set it for the bundle and name their config to taatool.
+  const test::ToolRun run = test::runProgram(test::taatoolPath(), args, scratch, {"OCIO"});
+  if (run.exitCode != 0) {
+    throw std::runtime_error("taatool failed (exit " + std::to_string(run.exitCode) + ") into " +
+                             out.string() + ": " + run.err);
+  }
+}
 
 std::string bundleBinary() {
   std::string root = TAA_OFX_BUNDLE_DIR;
@@ -98,18 +104,22 @@ void OfxHostTest::SetUpTestSuite() {
 void OfxHostTest::TearDownTestSuite() { fs::remove_all(dir_); }
 
 Image OfxHostTest::expected(int frame, const std::string& folder) {
-  static const std::map<std::string, std::string> arguments = {
-      {"taatool", ""},
-      {"taatool68", "--frames 6-8"},
-      {"taatool-half-scale", "--jitter-scale 0.5 --motion-scale 0.5"}};
+  static const std::map<std::string, std::vector<std::string>> arguments = {
+      {"taatool", {}},
+      {"taatool68", {"--frames", "6-8"}},
+      {"taatool-half-scale", {"--jitter-scale", "0.5", "--motion-scale", "0.5"}}};
   return expectedWith(frame, folder, arguments.at(folder));
 }
 
 Image OfxHostTest::expectedWith(int frame, const std::string& folder,
-                                const std::string& arguments) {
+                                std::vector<std::string> arguments) {
   // History mode, as the fixture's instances, unless the arguments choose.
-  const bool modeGiven = arguments.find("--mode") != std::string::npos;
-  runTaatoolOnce(dir_, folder, modeGiven ? arguments : "--mode history " + arguments);
+  if (std::find(arguments.begin(), arguments.end(), "--mode") == arguments.end()) {
+    arguments.insert(arguments.begin(), {"--mode", "history"});
+  }
+  if (!fs::exists(dir_ / folder)) {
+    runTaatool(dir_ / "beauty.####.exr", dir_ / folder, arguments);
+  }
   return readChannels((dir_ / folder / ("out." + frameName(frame) + ".exr")).string(),
                       {"R", "G", "B", "A"});
 }

@@ -42,7 +42,12 @@ class OfxHostTest : public ::testing::Test {
   static Image expected(int frame, const std::string& folder = "taatool");
   // taatool's output with `arguments` added (and --mode history unless they say --mode), into
   // `folder` (made on first use).
-  static Image expectedWith(int frame, const std::string& folder, const std::string& arguments);
+  static Image expectedWith(int frame, const std::string& folder,
+                            std::vector<std::string> arguments);
+  // taatool on `beauty` (a frame pattern) with the fixture's depth and motion files, -d float
+  // and `extra`, into out/out.####.exr; $OCIO unset. Throws with taatool's stderr if it fails.
+  static void runTaatool(const std::filesystem::path& beauty, const std::filesystem::path& out,
+                         const std::vector<std::string>& extra);
 
 
   // Loads the bundle, describes it in the general context, creates an instance, sets it to

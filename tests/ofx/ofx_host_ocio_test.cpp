@@ -93,14 +93,14 @@ TEST_F(OfxHostOcioTest, TaasBracketWorksInTheStudioConfigAndMissingNamesAreRepor
   for (int f = kFirst; f <= 3; ++f) {
     EXPECT_LE(maxDifference(render(*effect, f),
                             expectedWith(f, "taatool-studio-gamma",
-                                         "--ocio-config '" + studio_ + "' --bracket gamma_half")),
+                                         {"--ocio-config", studio_, "--bracket", "gamma_half"})),
               1e-5f)
         << "frame " << f;
   }
   // The bracket matters: the comparison can fail.
   EXPECT_GT(maxDifference(expected(3), expectedWith(3, "taatool-studio-gamma",
-                                                      "--ocio-config '" + studio_ +
-                                                          "' --bracket gamma_half")),
+                                                      {"--ocio-config", studio_, "--bracket",
+                                                       "gamma_half"})),
             1e-4f);
   destroy(effect);
 }
@@ -121,7 +121,7 @@ TEST_F(OfxHostOcioTest, ConfigFileParameter) {
   EXPECT_EQ(host_.persistentMessage(*effect), "");
   EXPECT_LE(maxDifference(render(*effect, 1),
                           expectedWith(1, "taatool-studio-none",
-                                       "--ocio-config '" + studio_ + "' --bracket none")),
+                                       {"--ocio-config", studio_, "--bracket", "none"})),
             1e-5f);
   destroy(effect);
 }

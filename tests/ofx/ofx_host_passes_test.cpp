@@ -54,17 +54,12 @@ class OfxHostPassesTest : public OfxHostTest {
     // Every pass, and (into out-cryptomatte) Cryptomatte alone: an effect resolves one pass
     // beside the Source, and Cryptomatte without light passes follows the stratified colour.
     const fs::path in = dir_ / "passes";
-    for (const auto& [out, rules] :
-         std::vector<std::pair<std::string, std::string>>{
-             {"out", ""}, {"out-cryptomatte", " --aov 'Crypto*=cryptomatte' --aov '*=drop'"}}) {
-      const std::string command =
-          "env -u OCIO '" + test::taatoolPath() + "' '" +
-          (in / "beauty.####.exr").string() + "' --depth '" + (dir_ / "depth.####.exr").string() +
-          "' --motion '" + (dir_ / "motion.####.exr").string() +
-          "' -d float --mode window --window 2 -o '" + (in / out / "out.####.exr").string() +
-          "' -q" + rules;
-      ASSERT_EQ(std::system(command.c_str()), 0) << command;
-    }
+    const std::vector<std::string> window = {"--mode", "window", "--window", "2"};
+    runTaatool(in / "beauty.####.exr", in / "out", window);
+    std::vector<std::string> cryptomatteAlone = window;
+    cryptomatteAlone.insert(cryptomatteAlone.end(),
+                            {"--aov", "Crypto*=cryptomatte", "--aov", "*=drop"});
+    runTaatool(in / "beauty.####.exr", in / "out-cryptomatte", cryptomatteAlone);
   }
 
   // The fixture's beauty file (its header kept) with the passes as channels named as Cycles

@@ -12,7 +12,7 @@ namespace {
 class OfxHostPoolTest : public OfxHostTest {
  protected:
   static Image expectedWindow(int frame) {
-    return expectedWith(frame, "taatool-window", "--mode window --window 2");
+    return expectedWith(frame, "taatool-window", {"--mode", "window", "--window", "2"});
   }
   void setWindowMode(HostEffect& effect) {
     effect.params.at("mode").intValue = 1;

@@ -13,14 +13,16 @@ namespace taa::ofxtest {
 namespace {
 
 constexpr int kRadius = 2;
-const char* const kWindowArguments = "--mode window --window 2";
+const std::vector<std::string> kWindowArguments = {"--mode", "window", "--window", "2"};
 
 class OfxHostWindowTest : public OfxHostTest {
  protected:
   // taatool --mode window --window 2 (plus `extra`) on the clip's files.
   static Image expectedWindow(int frame, const std::string& folder = "taatool-window",
-                              const std::string& extra = "") {
-    return expectedWith(frame, folder, std::string(kWindowArguments) + " " + extra);
+                              const std::vector<std::string>& extra = {}) {
+    std::vector<std::string> arguments = kWindowArguments;
+    arguments.insert(arguments.end(), extra.begin(), extra.end());
+    return expectedWith(frame, folder, arguments);
   }
 
   void setWindowMode(HostEffect& effect, int radius = kRadius) {
@@ -148,13 +150,13 @@ TEST_F(OfxHostWindowTest, TheNextFrameFetchesOneFrame) {
   EXPECT_EQ(fetched(7), 4);  // 5-8
   // Window Sigma reaches the resolve (the two frames differ) and starts an empty ring.
   EXPECT_GT(maxDifference(expectedWindow(7),
-                          expectedWindow(7, "taatool-window-sigma", "--window-sigma 0.5")),
+                          expectedWindow(7, "taatool-window-sigma", {"--window-sigma", "0.5"})),
             1e-3f);
   effect->params.at("windowSigma").doubleValue = 0.5;
   EXPECT_EQ(host_.parameterChanged(*effect, "windowSigma"), kOfxStatOK);
   const int before = source.imagesServed;
   EXPECT_EQ(maxDifference(render(*effect, 7),
-                          expectedWindow(7, "taatool-window-sigma", "--window-sigma 0.5")),
+                          expectedWindow(7, "taatool-window-sigma", {"--window-sigma", "0.5"})),
             0.0f);
   EXPECT_EQ(source.imagesServed - before, 4);
   destroy(effect);
@@ -166,7 +168,7 @@ TEST_F(OfxHostWindowTest, RenderScaleScalesMotionAndJitterLikeTaatool) {
   setWindowMode(*effect);
   const auto halfScale = [](int f) {
     return expectedWindow(f, "taatool-window-half-scale",
-                          "--jitter-scale 0.5 --motion-scale 0.5");
+                          {"--jitter-scale", "0.5", "--motion-scale", "0.5"});
   };
   for (int f : {4, 5, 1}) {
     EXPECT_EQ(maxDifference(render(*effect, f, kOfxStatOK, 0.5), halfScale(f)), 0.0f)
