@@ -41,6 +41,10 @@
 #ifndef CRYPTOMATTE
 #define CRYPTOMATTE 0  // 1: a Cryptomatte set's IDs, weighed as the beauty's samples (issue 21)
 #endif
+#ifndef PASS_IMAGES
+#define PASS_IMAGES 0  // 1: the pass sums and Cryptomatte ranks are written as images (OpenGL
+#endif                 // 4.2's image stores; the caller enables the extension), so one draw
+                       // holds every group and a Cryptomatte set, past the 8 draw buffers
 #ifndef TILE_STATS
 #define TILE_STATS 0  // 1: the tile test's input, per sampled pixel and source (uStatsStride)
 #endif
@@ -176,6 +180,10 @@ layout(location = 1) out vec4 outDebug;  // weight gathered, rejected fraction, 
 // weight, so a relation that is linear per sample (Combined = the sum of the light passes)
 // holds in the result.
 #if PASS_GROUPS > 0 || CRYPTOMATTE
+#if PASS_IMAGES
+// The draw covers a band of rows from this one; its images hold that band alone.
+uniform int uBandStart;
+#endif
 uniform int uTargetPassLayer;
 uniform int uSourcePassLayer[MAX_SOURCES];
 int gSourcePassLayer;
@@ -189,7 +197,12 @@ vec4 quadrantOf(vec2 offset) {
 }
 #if CRYPTOMATTE
 #include "window_cryptomatte.glsl"
-layout(location = 2) out vec4 outCrypto[3];  // rank layers 0..2: id, coverage, id, coverage
+// Rank layers 0..2: id, coverage, id, coverage.
+#if PASS_IMAGES
+layout(rgba32f) uniform writeonly image2D uCryptoOutputs[3];  // at the band's rows
+#else
+layout(location = 2) out vec4 outCrypto[3];
+#endif
 // What each quadrant's samples count for in the beauty's stratified mean (outStrataShares, the
 // beauty's draw); without it (a run whose colour comes from the pass draws) every sample
 // counts by its weight alone, as in the plain mean.
@@ -214,7 +227,11 @@ vec4 gStrataShares;
 #endif
 #if PASS_GROUPS > 0
 uniform sampler2DArray uPasses[PASS_GROUPS];
+#if PASS_IMAGES
+layout(rgba32f) uniform writeonly image2D uPassOutputs[PASS_GROUPS];
+#else
 layout(location = 2) out vec4 outPasses[PASS_GROUPS];
+#endif
 vec4 gPassSum[PASS_GROUPS];
 vec4 gSourcePassSum[PASS_GROUPS];
 #define ADD_PASSES(sums, n, layer, weight)                                   \
@@ -918,10 +935,25 @@ void main() {
   outColor = finiteOutput(taaFromWorking(working));
 #endif
 #if PASS_GROUPS > 0
-  for (int g = 0; g < PASS_GROUPS; ++g) outPasses[g] = finitePass(gPassSum[g] / gWeight);
+  for (int g = 0; g < PASS_GROUPS; ++g) {
+#if PASS_IMAGES
+    imageStore(uPassOutputs[g], pixel - ivec2(0, uBandStart),
+               finitePass(gPassSum[g] / gWeight));
+#else
+    outPasses[g] = finitePass(gPassSum[g] / gWeight);
+#endif
+  }
 #endif
 #if CRYPTOMATTE
+#if PASS_IMAGES
+  vec4 ranks[3];
+  cryptoOutput(ranks[0], ranks[1], ranks[2]);
+  for (int r = 0; r < 3; ++r) {
+    imageStore(uCryptoOutputs[r], pixel - ivec2(0, uBandStart), ranks[r]);
+  }
+#else
   cryptoOutput(outCrypto[0], outCrypto[1], outCrypto[2]);
+#endif
 #endif
   // Rejected: hidden candidates, and the weight of sources left out for their colour.
   float rejected = gHidden + gDisagreeing;

@@ -9,6 +9,8 @@
 #include <OpenImageIO/imageio.h>
 
 #include <cmath>
+#include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <set>
 #include <string>
@@ -65,7 +67,7 @@ class PassesTest : public ::testing::Test {
   // emission, a normal, an object index; half colour, float data, as Cycles writes them.
   static void addPasses(const fs::path& path) {
     const Exr in = readExr(path);
-    OIIO::ImageSpec spec(kWidth, kHeight, 0, OIIO::TypeHalf);
+    OIIO::ImageSpec spec(in.spec.width, in.spec.height, 0, OIIO::TypeHalf);
     std::vector<std::string> names = {"R", "G", "B", "A"};
     for (const std::string pass : {"DiffDir", "DiffCol", "GlossDir", "GlossCol", "Emit"}) {
       for (const std::string& c : kRgb) names.push_back(pass + "." + c);
@@ -286,6 +288,85 @@ TEST_F(PassesTest, CryptomatteAloneKeepsTheStratifiedBeautyAndFollowsIt) {
   EXPECT_GT(stratified, 20u);
   std::printf("Cryptomatte alone: %zu pixels of the stratified colour differ from the plain\n",
               stratified);
+}
+
+// The gather writes its pass sums as images where the context has image stores (one draw for
+// every group and the first Cryptomatte set, in bands of 256 rows) and as draw buffers
+// otherwise (six groups a draw, a draw a Cryptomatte set; TAA_GL_IMAGE_STORES=0 chooses them):
+// the same files bit for bit. Eleven groups and two Cryptomatte sets, so that the draw buffers
+// take two group draws and two Cryptomatte draws; 300 rows, a whole band and part of one.
+TEST_F(PassesTest, ImageStoresAndDrawBuffersWriteThePassesAlike) {
+  constexpr float kIdMaterial = 3.25e-5f;
+  constexpr int kTallFrames = 3;
+  in_ = dir_ / "tall";
+  test::writeSeparateFrames(in_, 1, kTallFrames, 24, 300);
+  for (int f = 1; f <= kTallFrames; ++f) {
+    const fs::path path = in_ / frameName("beauty", f);
+    addPasses(path);
+    const Exr in = readExr(path);
+    OIIO::ImageSpec spec = in.spec;
+    std::vector<float> pixels;
+    const int extraLights = 8;
+    for (int l = 0; l < extraLights; ++l) {
+      for (const std::string& c : kRgb) {
+        spec.channelnames.push_back("Light" + std::to_string(l) + "." + c);
+        spec.channelformats.push_back(OIIO::TypeHalf);
+      }
+    }
+    for (const char* c : {"r", "g", "b", "a"}) {
+      spec.channelnames.push_back("CryptoMaterial00." + std::string(c));
+      spec.channelformats.push_back(OIIO::TypeFloat);
+    }
+    spec.nchannels = int(spec.channelnames.size());
+    spec.attribute("cryptomatte/a1b2c3d/name", "CryptoMaterial");
+    for (std::size_t p = 0; p < in.spec.image_pixels(); ++p) {
+      const float* own = &in.pixels[p * std::size_t(in.spec.nchannels)];
+      pixels.insert(pixels.end(), own, own + in.spec.nchannels);
+      for (int l = 0; l < extraLights; ++l) {
+        for (const std::string& c : kRgb) pixels.push_back(0.1f * (l + 1) * in.at(p, c));
+      }
+      const bool red = in.at(p, "CryptoObject00.r") == kIdRed;
+      for (float v : {red ? kIdMaterial : kIdOther, 1.0f, 0.0f, 0.0f}) pixels.push_back(v);
+    }
+    auto out = OIIO::ImageOutput::create(path.string());
+    ASSERT_TRUE(out && out->open(path.string(), spec));
+    ASSERT_TRUE(out->write_image(OIIO::TypeFloat, pixels.data()));
+    ASSERT_TRUE(out->close());
+  }
+  // The draws each way, by TAA_GL_PROFILE's lines.
+  setenv("TAA_GL_PROFILE", "1", 1);
+  const ToolRun images = run({"-q"}, "images");
+  setenv("TAA_GL_IMAGE_STORES", "0", 1);
+  const ToolRun buffers = run({"-q"}, "buffers");
+  unsetenv("TAA_GL_IMAGE_STORES");
+  unsetenv("TAA_GL_PROFILE");
+  ASSERT_EQ(images.exitCode, 0) << images.err;
+  ASSERT_EQ(buffers.exitCode, 0) << buffers.err;
+  const auto draws = [](const std::string& err, const std::string& pass) {
+    const std::size_t at = err.find("\n" + pass + " ");
+    return at == std::string::npos ? -1 : std::atoi(err.c_str() + at + pass.size() + 2);
+  };
+  const std::string joined = "window gather pass (pass groups and Cryptomatte)";
+  const std::string groups = "window gather pass (pass groups)";
+  const std::string cryptomatte = "window gather pass (Cryptomatte)";
+  // Two bands a frame with image stores.
+  EXPECT_EQ(draws(images.err, joined), 2 * kTallFrames) << images.err;
+  EXPECT_EQ(draws(images.err, groups), -1) << images.err;
+  EXPECT_EQ(draws(images.err, cryptomatte), 2 * kTallFrames) << images.err;  // the second set
+  EXPECT_EQ(draws(buffers.err, joined), -1) << buffers.err;
+  EXPECT_EQ(draws(buffers.err, groups), 2 * kTallFrames) << buffers.err;
+  EXPECT_EQ(draws(buffers.err, cryptomatte), 2 * kTallFrames) << buffers.err;
+  for (int f = 1; f <= kTallFrames; ++f) {
+    const Exr a = readExr(dir_ / "images" / frameName("r", f));
+    const Exr b = readExr(dir_ / "buffers" / frameName("r", f));
+    ASSERT_EQ(a.spec.channelnames, b.spec.channelnames);
+    ASSERT_EQ(a.pixels.size(), b.pixels.size());
+    std::size_t differing = 0;
+    for (std::size_t i = 0; i < a.pixels.size(); ++i) {
+      differing += std::memcmp(&a.pixels[i], &b.pixels[i], sizeof(float)) != 0;
+    }
+    EXPECT_EQ(differing, 0u) << "frame " << f;
+  }
 }
 
 // A float data pass keeps values a half colour output cannot hold: the colour's 65504 limit is

@@ -1,6 +1,9 @@
 #include "gl/context.h"
 
+#include <algorithm>
+#include <cstdlib>
 #include <cstring>
+#include <string>
 
 #include "gl/context_backends.h"
 #include "taa/error.h"
@@ -84,6 +87,15 @@ ContextInfo queryContextInfo(const Functions& gl, Backend backend, const std::st
   }
   if (!(profile & GL_CONTEXT_CORE_PROFILE_BIT)) {
     throw Error(where + ": got a compatibility-profile context, taa needs the core profile");
+  }
+  gl.GetIntegerv(GL_MAX_TEXTURE_IMAGE_UNITS, &info.fragmentTextureUnits);
+  const char* imageStores = std::getenv("TAA_GL_IMAGE_STORES");
+  const bool imagesWanted = !(imageStores && std::string(imageStores) == "0");
+  if (imagesWanted && major * 10 + minor >= 42 && gl.BindImageTexture && gl.MemoryBarrier) {
+    GLint fragmentImages = 0, units = 0;
+    gl.GetIntegerv(GL_MAX_FRAGMENT_IMAGE_UNIFORMS, &fragmentImages);
+    gl.GetIntegerv(GL_MAX_IMAGE_UNITS, &units);
+    info.fragmentImageUnits = std::min(fragmentImages, units);
   }
   return info;
 }

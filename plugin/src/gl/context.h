@@ -21,6 +21,11 @@ struct ContextInfo {
   Backend backend = Backend::Auto;  // the back end actually in use (never Auto)
   std::string platform;             // e.g. "EGL device", "EGL surfaceless", "OSMesa"
   std::string vendor, renderer, version, glslVersion;
+  // Images a fragment shader may write (OpenGL 4.2's image stores), 0 without them (a 4.1
+  // context) or with TAA_GL_IMAGE_STORES=0 in the environment (to compare the two ways of the
+  // window gather's pass outputs); and the texture units a fragment shader may read.
+  int fragmentImageUnits = 0;
+  int fragmentTextureUnits = 0;
 };
 
 // Receives informational messages, such as why "auto" fell back from EGL to OSMesa.

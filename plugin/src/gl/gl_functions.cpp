@@ -14,6 +14,9 @@ void Functions::load(ProcLoader loader, void* userData, const char* backendName)
   if (!name && !missing) missing = "gl" #name;
 #include "gl/gl_function_list.inc"
 #undef TAA_GL_FUNCTION
+#define TAA_GL_FUNCTION(type, name) name = reinterpret_cast<type>(loader("gl" #name, userData));
+#include "gl/gl_optional_function_list.inc"
+#undef TAA_GL_FUNCTION
   if (missing) {
     throw Error(std::string(backendName) + ": OpenGL entry point " + missing +
                 " is not available");

@@ -12,9 +12,11 @@ using ProcLoader = void* (*)(const char* name, void* userData);
 struct Functions {
 #define TAA_GL_FUNCTION(type, name) type name = nullptr;
 #include "gl/gl_function_list.inc"
+#include "gl/gl_optional_function_list.inc"
 #undef TAA_GL_FUNCTION
 
-  // Resolves every entry; throws taa::Error naming the first entry point that is missing.
+  // Resolves every entry; throws taa::Error naming the first entry point of
+  // gl_function_list.inc that is missing (gl_optional_function_list.inc's stay null).
   void load(ProcLoader loader, void* userData, const char* backendName);
 };
 

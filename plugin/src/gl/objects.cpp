@@ -133,7 +133,7 @@ void checkError(const Functions& gl, const char* what) {
 
 Texture::Texture(const Functions& gl, int width, int height, GLenum internalFormat,
                  Filter filter)
-    : width_(width), height_(height) {
+    : width_(width), height_(height), format_(internalFormat) {
   if (width <= 0 || height <= 0) {
     throw Error("texture size " + std::to_string(width) + "x" + std::to_string(height) +
                 " is not positive");
@@ -172,6 +172,26 @@ void Texture::bind(int unit) const {
   const Functions& gl = handle_.gl();
   gl.ActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(unit));
   gl.BindTexture(GL_TEXTURE_2D, handle_.id());
+}
+
+void Texture::bindImage(int unit) const {
+  const Functions& gl = handle_.gl();
+  if (!gl.BindImageTexture) throw Error("texture: this OpenGL context has no image stores");
+  gl.BindImageTexture(GLuint(unit), handle_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, format_);
+  checkError(gl, "binding a texture as an image");
+}
+
+void Texture::readRGBA(void* pixels, GLenum type) const {
+  const Functions& gl = handle_.gl();
+  gl.BindBuffer(GL_PIXEL_PACK_BUFFER, 0);
+  gl.PixelStorei(GL_PACK_ALIGNMENT, 1);
+  // The active unit's binding put back: a read between draws leaves their inputs as bound.
+  GLint bound = 0;
+  gl.GetIntegerv(GL_TEXTURE_BINDING_2D, &bound);
+  gl.BindTexture(GL_TEXTURE_2D, handle_.id());
+  gl.GetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, type, pixels);
+  gl.BindTexture(GL_TEXTURE_2D, GLuint(bound));
+  checkError(gl, "reading a texture back");
 }
 
 // --- TextureArray ------------------------------------------------------------------------

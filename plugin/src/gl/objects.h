@@ -76,6 +76,12 @@ class Texture {
   void upload(const void* pixels, int components, GLenum type);
   void upload(const float* pixels, int components) { upload(pixels, components, GL_FLOAT); }
   void bind(int unit) const;
+  // Binds the texture to image unit `unit` for a shader's image stores (write only; the
+  // context must have them: ContextInfo::fragmentImageUnits). A pass that stores into it
+  // must be followed by MemoryBarrier before the texture is read.
+  void bindImage(int unit) const;
+  // Reads the texture back as RGBA of `type` (GL_FLOAT or GL_HALF_FLOAT), row 0 first.
+  void readRGBA(void* pixels, GLenum type) const;
 
   GLuint id() const { return handle_.id(); }
   int width() const { return width_; }
@@ -84,6 +90,7 @@ class Texture {
  private:
   Handle<TextureDeleter> handle_;
   int width_ = 0, height_ = 0;
+  GLenum format_ = 0;  // the internal format
 };
 
 // A 2D array texture (nearest filtering, clamp to edge): `layers` images of one size and

@@ -3,11 +3,13 @@
 #include <array>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <functional>
 #include <limits>
 #include <map>
 #include <optional>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -52,10 +54,17 @@ constexpr int kNearMovingRadius = 16;
 constexpr int kNearMovingReferenceSize = 180;  // the shorter side where a step is a pixel
 
 constexpr int kMaxSources = 2 * kMaxWindowRadius;  // window_gather.frag's MAX_SOURCES
-// Pass groups one gather writes besides the colour and diagnostics: 8 draw buffers, GL's
+// Pass groups one gather writes besides the colour and diagnostics as draw buffers: 8, GL's
 // guaranteed minimum, less those two. (4, to save two frame-sized targets, cost more time
-// than the memory was worth: docs/PERFORMANCE.md, "Fourth measurement".)
-constexpr int kPassGroupsPerDraw = 6;
+// than the memory was worth: docs/PERFORMANCE.md, "Fourth measurement".) With image stores
+// (OpenGL 4.2) a draw writes as many as the context's units hold (passGroupsPerDraw).
+constexpr int kPassGroupsPerDrawBuffers = 6;
+constexpr int kCryptomatteRanks = 3;  // rank layers a Cryptomatte set's draw writes
+// With image stores a pass draw runs in bands of this many rows, its sums written to images of
+// a band's size and read back after each band: fifteen frame-sized RGBA32F sums (a render's
+// every pass in one draw) would add 300 MB to a 1080p run whose bar is 4 GiB (docs/PERFORMANCE.md,
+// "Seventh measurement"); fifteen bands' take 118 MB, less than six frame-sized ones.
+constexpr int kPassBandRows = 256;
 
 // How window_classify.frag decides which samples are static.
 enum class Classify : int { NoCamera = 0, PreviousCamera = 1, NextFrame = 2, AllStatic = 3 };
@@ -108,13 +117,14 @@ struct WindowResolver::Impl {
   // alone or for any (resolve/camera's isPinhole: a pinhole carry's offset is a translation,
   // and 14 of the 48 values each source loads lane by lane are zeros). llvmpipe would run the
   // code left out for every pixel, masked.
-  // Each variant's draws (gatherProgram): the beauty, PASS_GROUPS n (1 to kPassGroupsPerDraw),
-  // CRYPTOMATTE, TILE_STATS; by (variant, draw).
+  // Each variant's draws (gatherProgram): the beauty, PASS_GROUPS n (1 to passGroupsPerDraw),
+  // with or without the first Cryptomatte set, CRYPTOMATTE, TILE_STATS; by (variant, draw,
+  // Cryptomatte joined).
   static constexpr int kGatherVariants = 6;  // chains (bit 0) x STATIC_SAMPLES 0, 1, 2
   static constexpr int kCryptomatteDraw = -1, kTileStatsDraw = -2;
   std::vector<std::string> gatherPrefix[kGatherVariants];
   color::OcioBracket::Range gatherWorkingRange{};  // glsl/finite_range.glsl's limits
-  std::map<std::pair<int, int>, gl::Program> gatherPrograms;
+  std::map<std::tuple<int, int, bool>, gl::Program> gatherPrograms;
   gl::AnySamplesQuery movingQuery;
   // The tile test: its targets (the gather's TILE_STATS draw writes them), the tiles' reach.
   gl::Texture stats[4], tileReach;
@@ -157,10 +167,12 @@ struct WindowResolver::Impl {
   std::vector<bool> passHalf;
   std::vector<gl::TextureArray> passRings;
   std::vector<int> freePassLayers;
-  // The sums of one draw (its groups', or a Cryptomatte set's three rank layers), read back
-  // before the next draw writes them: 6 textures where a render's every pass has 15 sums.
+  // The sums of one draw (its groups', and a Cryptomatte set's three rank layers from
+  // cryptomatteOutput()), read back before the next draw writes them: with image stores as
+  // many as a draw writes (15 for a render's every pass: one draw), else 6.
   std::vector<gl::Texture> passOutputs;
-  std::vector<gl::Framebuffer> passTargets;  // per draw: output, debug, its groups' sums
+  // Per draw: output, debug, and without image stores its groups' sums.
+  std::vector<gl::Framebuffer> passTargets;
   PassSums lastSums;  // read back as the groups' ring type: half groups' sums as half
   int cryptomatteSets = 0;
   std::vector<gl::TextureArray> cryptomatteRings;  // RGBA32F, at the frames' pass layers
@@ -247,10 +259,11 @@ struct WindowResolver::Impl {
     return options.window.nearRadius > 0 && options.window.nearRadius < options.window.radius;
   }
 
-  // A variant's gather: `draw` 0 the beauty alone, n > 0 with n pass groups, kCryptomatteDraw
-  // a Cryptomatte set, kTileStatsDraw the tile test's statistics. Built when first needed.
-  const gl::Program& gatherProgram(int variant, int draw) {
-    const auto key = std::make_pair(variant, draw);
+  // A variant's gather: `draw` 0 the beauty alone, n > 0 with n pass groups (and, with
+  // `joinedCryptomatte`, a Cryptomatte set: image stores only), kCryptomatteDraw a Cryptomatte
+  // set, kTileStatsDraw the tile test's statistics. Built when first needed.
+  const gl::Program& gatherProgram(int variant, int draw, bool joinedCryptomatte = false) {
+    const auto key = std::make_tuple(variant, draw, joinedCryptomatte);
     auto found = gatherPrograms.find(key);
     if (found != gatherPrograms.end()) return found->second;
     std::vector<std::string> prefix = gatherPrefix[variant];
@@ -258,6 +271,12 @@ struct WindowResolver::Impl {
       prefix.insert(prefix.begin(), draw == kTileStatsDraw     ? std::string("#define TILE_STATS 1")
                                     : draw == kCryptomatteDraw ? std::string("#define CRYPTOMATTE 1")
                                     : "#define PASS_GROUPS " + std::to_string(draw));
+    }
+    if ((draw > 0 || draw == kCryptomatteDraw) && passImages()) {
+      if (joinedCryptomatte) prefix.insert(prefix.begin(), "#define CRYPTOMATTE 1");
+      prefix.insert(prefix.begin(), "#define PASS_IMAGES 1");
+      // Ahead of the bracket's code in the prefix: an #extension precedes any code.
+      prefix.insert(prefix.begin(), "#extension GL_ARB_shader_image_load_store : require");
     }
     gl::Program p(gl, gl::embeddedShaderSource("fullscreen.vert"),
                   gl::embeddedShaderSource("window_gather.frag", prefix));
@@ -288,8 +307,32 @@ struct WindowResolver::Impl {
 
   bool hasPasses() const { return !passHalf.empty() || cryptomatteSets > 0; }
   bool regionTest() const { return options.window.regionTolerance > 0.0f && !hasPasses(); }
+  // Whether the gather writes its pass sums and Cryptomatte ranks as images (OpenGL 4.2's
+  // image stores) rather than draw buffers: then one draw holds every pass group (up to
+  // passGroupsPerDraw) and the first Cryptomatte set, and a frame's weights are worked out
+  // once rather than once a draw (docs/PERFORMANCE.md, "One draw for every pass"). Runs with
+  // pass groups only: Cryptomatte alone is one draw a set either way.
+  bool passImages() const {
+    return !passHalf.empty() &&
+           context.info().fragmentImageUnits >= kPassGroupsPerDrawBuffers + kCryptomatteRanks;
+  }
+  int passGroupsPerDraw() const {
+    if (!passImages()) return kPassGroupsPerDrawBuffers;
+    const gl::ContextInfo& info = context.info();
+    // Texture units past firstPassUnit: the groups' rings, then cryptomatteUnit's two, the
+    // region statistics and the surroundings.
+    const int byTextures = info.fragmentTextureUnits - firstPassUnit() - 4;
+    const int byImages = info.fragmentImageUnits - kCryptomatteRanks;
+    return std::max(kPassGroupsPerDrawBuffers, std::min(byTextures, byImages));
+  }
+  // A Cryptomatte set's ring, and the beauty's strata shares at the unit after it.
+  int cryptomatteUnit() const { return firstPassUnit() + passGroupsPerDraw(); }
+  // The first of passOutputs a Cryptomatte set's ranks are written to.
+  int cryptomatteOutput() const {
+    return passImages() ? std::min(int(passHalf.size()), passGroupsPerDraw()) : 0;
+  }
   // The unit the gather reads the region statistics from: past the pass groups' units.
-  int regionStatsUnit() const { return firstPassUnit() + kPassGroupsPerDraw; }
+  int regionStatsUnit() const { return cryptomatteUnit() + 2; }
   // A radius of 1 searches t's 3x3 alone, which the gather reads anyway: nothing to find.
   bool thinSearch() const { return options.window.thinSearchRadius > 1; }
   int surroundingsUnit() const { return regionStatsUnit() + 1; }
@@ -367,9 +410,13 @@ struct WindowResolver::Impl {
     for (int s = 0; s < cryptomatteSets; ++s) {
       cryptomatteRings.emplace_back(gl, width, height, capacity(), GL_RGBA32F);
     }
-    const int outputs = std::max(std::min(int(passHalf.size()), kPassGroupsPerDraw),
-                                 cryptomatteSets > 0 ? 3 : 0);
-    for (int o = 0; o < outputs; ++o) passOutputs.emplace_back(gl, width, height, GL_RGBA32F);
+    const int outputs =
+        std::max(std::min(int(passHalf.size()), passGroupsPerDraw()),
+                 cryptomatteOutput() + (cryptomatteSets > 0 ? kCryptomatteRanks : 0));
+    const int outputRows = passImages() ? std::min(height, kPassBandRows) : height;
+    for (int o = 0; o < outputs; ++o) {
+      passOutputs.emplace_back(gl, width, outputRows, GL_RGBA32F);
+    }
     for (int layer = capacity() - 1; layer >= 0; --layer) freePassLayers.push_back(layer);
   }
 
@@ -759,10 +806,15 @@ struct WindowResolver::Impl {
     classifyWindow(first, last);
     if (thinSearch() || regionTest()) writeSurroundings(frame);
     const int groups = int(passHalf.size());
-    const int groupDraws = (groups + kPassGroupsPerDraw - 1) / kPassGroupsPerDraw;
+    const int perDraw = passGroupsPerDraw();
+    const int groupDraws = (groups + perDraw - 1) / perDraw;
+    // With image stores the first Cryptomatte set is weighed in the last pass-group draw.
+    const int joinedSets = passImages() && cryptomatteSets > 0 ? 1 : 0;
+    // Without image stores a Cryptomatte set's draw has a target of its own.
+    const int setTargets = passImages() ? 0 : cryptomatteSets;
     if (!gatherTarget.id() || gatherHasDebug != debugOutput ||
         int(passTargets.size()) != groupDraws ||
-        int(cryptomatteTargets.size()) != cryptomatteSets) {
+        int(cryptomatteTargets.size()) != setTargets) {
       debug = debugOutput ? gl::Texture(gl, width, height, GL_RGBA32F) : gl::Texture();
       std::vector<gl::Attachment> beautyOutputs{&output, debugOutput ? &debug : nullptr};
       if (cryptomatteFollowsStrata()) beautyOutputs.emplace_back(&strataShares);
@@ -771,18 +823,18 @@ struct WindowResolver::Impl {
       passTargets.clear();
       for (int d = 0; d < groupDraws; ++d) {
         std::vector<gl::Attachment> attachments{&output, debugOutput ? &debug : nullptr};
-        for (int g = d * kPassGroupsPerDraw; g < std::min(groups, (d + 1) * kPassGroupsPerDraw);
+        for (int g = d * perDraw; g < std::min(groups, (d + 1) * perDraw) && !passImages();
              ++g) {
-          attachments.emplace_back(&passOutputs[std::size_t(g - d * kPassGroupsPerDraw)]);
+          attachments.emplace_back(&passOutputs[std::size_t(g - d * perDraw)]);
         }
         passTargets.emplace_back(gl, attachments);
       }
       cryptomatteTargets.clear();
-      for (int set = 0; set < cryptomatteSets; ++set) {
+      for (int set = 0; set < setTargets; ++set) {
         // The colour is the beauty's draw's, or the pass draws': not written again here.
         std::vector<gl::Attachment> attachments{nullptr, nullptr};
-        for (int rank = 0; rank < 3; ++rank) {
-          attachments.emplace_back(&passOutputs[std::size_t(rank)]);
+        for (int rank = 0; rank < kCryptomatteRanks; ++rank) {
+          attachments.emplace_back(&passOutputs[std::size_t(cryptomatteOutput() + rank)]);
         }
         cryptomatteTargets.emplace_back(gl, attachments);
       }
@@ -834,15 +886,66 @@ struct WindowResolver::Impl {
     // draw's own inputs. With passes, each draw weighs the samples as the beauty's draw does
     // (the same program text and uniforms but for its outputs: the same weights, bit for bit),
     // and each writes the colour too, the same every time.
-    auto drawGather = [&](int variant, const gl::Framebuffer& target,
-                          const std::function<void(const gl::Program&)>& bindExtra) {
-      const gl::Program& p = gatherProgram(kind, variant);
+    // With image stores a pass draw runs band by band: the rows firstRow.. of the frame, its
+    // sums written to band-sized images (kPassBandRows); firstRow -1 is the whole frame.
+    const int bandRows = passImages() ? std::min(height, kPassBandRows) : height;
+    auto drawGather = [&](int variant, bool joined, const gl::Framebuffer& target,
+                          const std::function<void(const gl::Program&)>& bindExtra,
+                          int firstRow = -1) {
+      const gl::Program& p = gatherProgram(kind, variant, joined);
       target.bind();
       setUniforms(p, tiles);
       bindExtra(p);
-      triangle.draw(variant == 0    ? "window gather pass"
-                    : variant > 0   ? "window gather pass (pass groups)"
-                                    : "window gather pass (Cryptomatte)");
+      if (firstRow >= 0) {
+        // gl_FragCoord counts from the window's corner, so the band's pixels keep their places.
+        gl.Viewport(0, firstRow, width, std::min(bandRows, height - firstRow));
+        p.set("uBandStart", firstRow);
+      }
+      triangle.draw(variant == 0 ? "window gather pass"
+                    : joined     ? "window gather pass (pass groups and Cryptomatte)"
+                    : variant > 0 ? "window gather pass (pass groups)"
+                                  : "window gather pass (Cryptomatte)");
+      if (firstRow >= 0) {
+        // Image stores are seen by the reads back past a barrier; llvmpipe hands an image's
+        // tiles back unfinished without glFinish (docs/PERFORMANCE.md, "Seventh measurement").
+        gl.MemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT);
+        gl.Finish();
+      }
+    };
+    // One band of `sums` (an image of bandRows rows, RGBA of `type`, `pixelBytes` a pixel)
+    // into rows firstRow.. of `whole` (the frame's).
+    std::vector<unsigned char> bandScratch;
+    auto readBand = [&](const gl::Texture& sums, void* whole, GLenum type, std::size_t pixelBytes,
+                        int firstRow) {
+      const std::size_t rowBytes = std::size_t(width) * pixelBytes;
+      const int rows = std::min(bandRows, height - firstRow);
+      auto* at = static_cast<unsigned char*>(whole) + std::size_t(firstRow) * rowBytes;
+      if (rows == bandRows) return sums.readRGBA(at, type);
+      bandScratch.resize(std::size_t(bandRows) * rowBytes);
+      sums.readRGBA(bandScratch.data(), type);
+      std::memcpy(at, bandScratch.data(), std::size_t(rows) * rowBytes);
+    };
+    // A Cryptomatte set's inputs; with image stores its ranks' images from `firstImage` on.
+    auto bindCryptomatte = [&](const gl::Program& p, int set, int firstImage) {
+      cryptomatteRings[std::size_t(set)].bind(cryptomatteUnit());
+      p.set("uCrypto", cryptomatteUnit());
+      p.set("uHasStrataShares", cryptomatteFollowsStrata() ? 1 : 0);
+      if (cryptomatteFollowsStrata()) strataShares.bind(cryptomatteUnit() + 1);
+      p.set("uStrataShares", cryptomatteUnit() + 1);
+      if (!passImages()) return;
+      std::vector<int> images;
+      for (int rank = 0; rank < kCryptomatteRanks; ++rank) {
+        images.push_back(firstImage + rank);
+        passOutputs[std::size_t(cryptomatteOutput() + rank)].bindImage(images.back());
+      }
+      p.setIntArray("uCryptoOutputs", images.data(), kCryptomatteRanks);
+    };
+    auto readCryptomatteBand = [&](int set, int firstRow) {
+      for (int rank = 0; rank < kCryptomatteRanks; ++rank) {
+        readBand(passOutputs[std::size_t(cryptomatteOutput() + rank)],
+                 lastSums.cryptomatte[std::size_t(3 * set + rank)].pixels.data(), GL_FLOAT,
+                 4 * sizeof(float), firstRow);
+      }
     };
     // Read back into the last frame's images where they are still here (takePassSums gives
     // them away); fresh ones come from the frame buffer pool.
@@ -858,35 +961,61 @@ struct WindowResolver::Impl {
     for (Image& ranks : lastSums.cryptomatte) {
       if (ranks.width != width || ranks.height != height) ranks = Image(width, height, 4);
     }
-    if (groups == 0) drawGather(0, gatherTarget, [](const gl::Program&) {});
+    if (groups == 0) drawGather(0, false, gatherTarget, [](const gl::Program&) {});
     for (int d = 0; d < groupDraws; ++d) {
-      const int firstGroup = d * kPassGroupsPerDraw;
-      const int drawGroups = std::min(groups - firstGroup, kPassGroupsPerDraw);
-      drawGather(drawGroups, passTargets[std::size_t(d)], [&](const gl::Program& p) {
-        std::vector<int> units;
+      const int firstGroup = d * perDraw;
+      const int drawGroups = std::min(groups - firstGroup, perDraw);
+      const bool joined = joinedSets > 0 && d == groupDraws - 1;
+      const gl::Framebuffer& target = passTargets[std::size_t(d)];
+      const auto bind = [&](const gl::Program& p) {
+        std::vector<int> units, images;
         for (int g = 0; g < drawGroups; ++g) {
           units.push_back(firstPassUnit() + g);
           passRings[std::size_t(firstGroup + g)].bind(units.back());
+          if (!passImages()) continue;
+          images.push_back(g);
+          passOutputs[std::size_t(g)].bindImage(g);
         }
         p.setIntArray("uPasses", units.data(), drawGroups);
-      });
-      for (int g = 0; g < drawGroups; ++g) {
-        TypedImage& sums = lastSums.groups[std::size_t(firstGroup + g)];
-        passTargets[std::size_t(d)].readRGBA(sums.data(), glType(sums.type()), 2 + g);
+        if (passImages()) p.setIntArray("uPassOutputs", images.data(), drawGroups);
+        if (joined) bindCryptomatte(p, 0, drawGroups);
+      };
+      if (!passImages()) {
+        drawGather(drawGroups, false, target, bind);
+        for (int g = 0; g < drawGroups; ++g) {
+          TypedImage& sums = lastSums.groups[std::size_t(firstGroup + g)];
+          target.readRGBA(sums.data(), glType(sums.type()), 2 + g);
+        }
+        continue;
+      }
+      for (int row = 0; row < height; row += bandRows) {
+        drawGather(drawGroups, joined, target, bind, row);
+        for (int g = 0; g < drawGroups; ++g) {
+          TypedImage& sums = lastSums.groups[std::size_t(firstGroup + g)];
+          readBand(passOutputs[std::size_t(g)], sums.data(), glType(sums.type()),
+                   4 * (sums.type() == SampleType::Half ? 2 : 4), row);
+        }
+        if (joined) readCryptomatteBand(0, row);
       }
     }
-    for (int set = 0; set < cryptomatteSets; ++set) {
-      drawGather(-1, cryptomatteTargets[std::size_t(set)], [&](const gl::Program& p) {
-        cryptomatteRings[std::size_t(set)].bind(firstPassUnit());
-        p.set("uCrypto", firstPassUnit());
-        p.set("uHasStrataShares", cryptomatteFollowsStrata() ? 1 : 0);
-        if (cryptomatteFollowsStrata()) strataShares.bind(firstPassUnit() + 1);
-        p.set("uStrataShares", firstPassUnit() + 1);
-      });
-      for (int rank = 0; rank < 3; ++rank) {
-        cryptomatteTargets[std::size_t(set)].readRGBA(
-            lastSums.cryptomatte[std::size_t(3 * set + rank)].pixels.data(), GL_FLOAT, 2 + rank);
+    for (int set = joinedSets; set < cryptomatteSets; ++set) {
+      const auto bind = [&](const gl::Program& p) { bindCryptomatte(p, set, 0); };
+      if (!passImages()) {
+        const gl::Framebuffer& target = cryptomatteTargets[std::size_t(set)];
+        drawGather(kCryptomatteDraw, false, target, bind);
+        for (int rank = 0; rank < kCryptomatteRanks; ++rank) {
+          target.readRGBA(lastSums.cryptomatte[std::size_t(3 * set + rank)].pixels.data(),
+                          GL_FLOAT, 2 + rank);
+        }
+        continue;
       }
+      // Into the pass draws' target, its colour left as they wrote it.
+      gl.ColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+      for (int row = 0; row < height; row += bandRows) {
+        drawGather(kCryptomatteDraw, false, passTargets.back(), bind, row);
+        readCryptomatteBand(set, row);
+      }
+      gl.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     }
 
     if (debugOutput) {
