@@ -3,6 +3,8 @@
 #include <OpenColorIO/OpenColorIO.h>
 #include <OpenImageIO/imageio.h>
 
+#include <string>
+
 #include "color/ocio_bracket.h"
 #include "gl/self_test.h"
 #include "taa/version.h"
@@ -20,6 +22,12 @@ int printInfo(gl::Backend backend, const gl::LogSink& log, std::ostream& out) {
       << "GL renderer:     " << info.renderer << "\n"
       << "GL version:      " << info.version << "\n"
       << "GLSL version:    " << info.glslVersion << "\n"
+      << "Image stores:    "
+      << (info.fragmentImageUnits > 0
+              ? std::to_string(info.fragmentImageUnits) +
+                    " images a shader (the passes' gather in one draw)"
+              : std::string("none (the passes' gather in draws of six groups)"))
+      << "\n"
       << "GL self-test:    " << (selfTest.passed ? "passed" : "FAILED") << " ("
       << selfTest.detail << ")\n"
       << "OpenColorIO:     " << OCIO_NAMESPACE::GetVersion() << "\n"

@@ -119,12 +119,12 @@ struct WindowResolver::Impl {
   // code left out for every pixel, masked.
   // Each variant's draws (gatherProgram): the beauty, PASS_GROUPS n (1 to passGroupsPerDraw),
   // with or without the first Cryptomatte set, CRYPTOMATTE, TILE_STATS; by (variant, draw,
-  // Cryptomatte joined).
+  // Cryptomatte joined, image stores: passImages, which a new pass plan may change).
   static constexpr int kGatherVariants = 6;  // chains (bit 0) x STATIC_SAMPLES 0, 1, 2
   static constexpr int kCryptomatteDraw = -1, kTileStatsDraw = -2;
   std::vector<std::string> gatherPrefix[kGatherVariants];
   color::OcioBracket::Range gatherWorkingRange{};  // glsl/finite_range.glsl's limits
-  std::map<std::tuple<int, int, bool>, gl::Program> gatherPrograms;
+  std::map<std::tuple<int, int, bool, bool>, gl::Program> gatherPrograms;
   gl::AnySamplesQuery movingQuery;
   // The tile test: its targets (the gather's TILE_STATS draw writes them), the tiles' reach.
   gl::Texture stats[4], tileReach;
@@ -263,7 +263,7 @@ struct WindowResolver::Impl {
   // `joinedCryptomatte`, a Cryptomatte set: image stores only), kCryptomatteDraw a Cryptomatte
   // set, kTileStatsDraw the tile test's statistics. Built when first needed.
   const gl::Program& gatherProgram(int variant, int draw, bool joinedCryptomatte = false) {
-    const auto key = std::make_tuple(variant, draw, joinedCryptomatte);
+    const auto key = std::make_tuple(variant, draw, joinedCryptomatte, passImages());
     auto found = gatherPrograms.find(key);
     if (found != gatherPrograms.end()) return found->second;
     std::vector<std::string> prefix = gatherPrefix[variant];
@@ -1009,13 +1009,19 @@ struct WindowResolver::Impl {
         }
         continue;
       }
-      // Into the pass draws' target, its colour left as they wrote it.
-      gl.ColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+      // Into the pass draws' target, its colour left as they wrote it (the mask put back
+      // however the draws end: a resolver outlives a failed frame).
+      struct ColourWritesOff {
+        const gl::Functions& functions;
+        explicit ColourWritesOff(const gl::Functions& f) : functions(f) {
+          functions.ColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+        }
+        ~ColourWritesOff() { functions.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE); }
+      } colourWritesOff(gl);
       for (int row = 0; row < height; row += bandRows) {
         drawGather(kCryptomatteDraw, false, passTargets.back(), bind, row);
         readCryptomatteBand(set, row);
       }
-      gl.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     }
 
     if (debugOutput) {
