@@ -62,8 +62,9 @@ constexpr int kPassGroupsPerDrawBuffers = 6;
 constexpr int kCryptomatteRanks = 3;  // rank layers a Cryptomatte set's draw writes
 // With image stores a pass draw runs in bands of this many rows, its sums written to images of
 // a band's size and read back after each band: fifteen frame-sized RGBA32F sums (a render's
-// every pass in one draw) would add 300 MB to a 1080p run whose bar is 4 GiB (docs/PERFORMANCE.md,
-// "Seventh measurement"); fifteen bands' take 118 MB, less than six frame-sized ones.
+// every pass in one draw) take 500 MB at 1080p, 300 MB more than six, on a run whose bar is
+// 4 GiB (docs/PERFORMANCE.md, "Seventh measurement": its peak rose 290 MB); fifteen bands'
+// take 118 MB.
 constexpr int kPassBandRows = 256;
 
 // How window_classify.frag decides which samples are static.
@@ -886,30 +887,31 @@ struct WindowResolver::Impl {
     // draw's own inputs. With passes, each draw weighs the samples as the beauty's draw does
     // (the same program text and uniforms but for its outputs: the same weights, bit for bit),
     // and each writes the colour too, the same every time.
-    // With image stores a pass draw runs band by band: the rows firstRow.. of the frame, its
-    // sums written to band-sized images (kPassBandRows); firstRow -1 is the whole frame.
+    // With image stores (`afterBand` given) a pass draw runs band by band, its sums written to
+    // band-sized images (kPassBandRows) that afterBand(first row) reads back before the next.
     const int bandRows = passImages() ? std::min(height, kPassBandRows) : height;
     auto drawGather = [&](int variant, bool joined, const gl::Framebuffer& target,
                           const std::function<void(const gl::Program&)>& bindExtra,
-                          int firstRow = -1) {
+                          const std::function<void(int)>& afterBand = {}) {
       const gl::Program& p = gatherProgram(kind, variant, joined);
       target.bind();
       setUniforms(p, tiles);
       bindExtra(p);
-      if (firstRow >= 0) {
+      const char* pass = variant == 0 ? "window gather pass"
+                         : joined     ? "window gather pass (pass groups and Cryptomatte)"
+                         : variant > 0 ? "window gather pass (pass groups)"
+                                       : "window gather pass (Cryptomatte)";
+      if (!afterBand) return triangle.draw(pass);
+      for (int row = 0; row < height; row += bandRows) {
         // gl_FragCoord counts from the window's corner, so the band's pixels keep their places.
-        gl.Viewport(0, firstRow, width, std::min(bandRows, height - firstRow));
-        p.set("uBandStart", firstRow);
-      }
-      triangle.draw(variant == 0 ? "window gather pass"
-                    : joined     ? "window gather pass (pass groups and Cryptomatte)"
-                    : variant > 0 ? "window gather pass (pass groups)"
-                                  : "window gather pass (Cryptomatte)");
-      if (firstRow >= 0) {
+        gl.Viewport(0, row, width, std::min(bandRows, height - row));
+        p.set("uBandStart", row);
+        triangle.draw(pass);
         // Image stores are seen by the reads back past a barrier; llvmpipe hands an image's
         // tiles back unfinished without glFinish (docs/PERFORMANCE.md, "Seventh measurement").
         gl.MemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT);
         gl.Finish();
+        afterBand(row);
       }
     };
     // One band of `sums` (an image of bandRows rows, RGBA of `type`, `pixelBytes` a pixel)
@@ -988,15 +990,14 @@ struct WindowResolver::Impl {
         }
         continue;
       }
-      for (int row = 0; row < height; row += bandRows) {
-        drawGather(drawGroups, joined, target, bind, row);
+      drawGather(drawGroups, joined, target, bind, [&](int row) {
         for (int g = 0; g < drawGroups; ++g) {
           TypedImage& sums = lastSums.groups[std::size_t(firstGroup + g)];
           readBand(passOutputs[std::size_t(g)], sums.data(), glType(sums.type()),
                    4 * (sums.type() == SampleType::Half ? 2 : 4), row);
         }
         if (joined) readCryptomatteBand(0, row);
-      }
+      });
     }
     for (int set = joinedSets; set < cryptomatteSets; ++set) {
       const auto bind = [&](const gl::Program& p) { bindCryptomatte(p, set, 0); };
@@ -1018,10 +1019,8 @@ struct WindowResolver::Impl {
         }
         ~ColourWritesOff() { functions.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE); }
       } colourWritesOff(gl);
-      for (int row = 0; row < height; row += bandRows) {
-        drawGather(kCryptomatteDraw, false, passTargets.back(), bind, row);
-        readCryptomatteBand(set, row);
-      }
+      drawGather(kCryptomatteDraw, false, passTargets.back(), bind,
+                 [&](int row) { readCryptomatteBand(set, row); });
     }
 
     if (debugOutput) {
