@@ -20,14 +20,22 @@ start=$SECONDS
 cmake -S "$root" -B "$build" "${asan_cmake_args[@]}" >/dev/null
 cmake --build "$build" -j"$(nproc)" --target "${targets[@]}"
 
-# One target: its own working corpus (new inputs; the committed one is only read), its crashes.
+# One target: its own working corpus (new inputs; the committed one is only read), its crashes,
+# its own TMPDIR, which must be empty again when it ends (the targets' scratch files,
+# tests/fuzz/fuzz_scratch_file.h, go with the process).
 run_target() {
   local target="$1" work="$build/fuzz/corpus-work/$1" crashes="$build/fuzz/crashes/$1"
-  mkdir -p "$work" "$crashes"
+  local tmp="$build/fuzz/tmp/$1"
+  rm -rf "$tmp"
+  mkdir -p "$work" "$crashes" "$tmp"
   # The runtime first: the fuzzers link libFuzzer ahead of it (sanitizers/environment.sh).
-  if LD_PRELOAD="${asan_preload%%:*}" "$build/fuzz/$target" -max_total_time="$seconds" -timeout=20 -rss_limit_mb=4096 \
+  if TMPDIR="$tmp" LD_PRELOAD="${asan_preload%%:*}" "$build/fuzz/$target" -max_total_time="$seconds" -timeout=20 -rss_limit_mb=4096 \
        -print_final_stats=1 -artifact_prefix="$crashes/" "$work" \
        "$root/tests/fuzz/corpus/$target" >"$build/fuzz/$target.log" 2>&1; then
+    if [ -n "$(ls -A "$tmp")" ]; then
+      echo "fuzz: $target FAILED: it left files in its TMPDIR: $(ls -A "$tmp" | tr '\n' ' ')"
+      return 1
+    fi
     echo "fuzz: $target: $(grep -E '^stat::number_of_executed_units' "$build/fuzz/$target.log" |
                            awk '{print $2}') inputs in ${seconds} s, no finding"
   else

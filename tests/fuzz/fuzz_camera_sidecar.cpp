@@ -4,19 +4,16 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
-#include <fstream>
 #include <string>
 
-#include <unistd.h>
-
+#include "fuzz_scratch_file.h"
 #include "io/camera_sidecar.h"
 #include "taa/error.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  static const std::string path =
-      "/tmp/taa_fuzz_sidecar_" + std::to_string(::getpid()) + ".json";
-  std::ofstream(path, std::ios::binary).write(reinterpret_cast<const char*>(data),
-                                              std::streamsize(size));
+  static const FuzzScratchFile scratch("sidecar.json");
+  const std::string& path = scratch.path();
+  scratch.write(data, size);
   try {
     const taa::io::CameraSidecar sidecar = taa::io::CameraSidecar::load(path);
     for (int frame : {0, 1, 1001, -1}) {

@@ -11,11 +11,9 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
-#include <fstream>
 #include <string>
 
-#include <unistd.h>
-
+#include "fuzz_scratch_file.h"
 #include "io/frame_reader.h"
 #include "taa/error.h"
 
@@ -52,7 +50,8 @@ extern "C" int LLVMFuzzerInitialize(int*, char***) {
 }
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  static const std::string path = "/tmp/taa_fuzz_frame_" + std::to_string(::getpid()) + ".exr";
+  static const FuzzScratchFile scratch("frame.exr");
+  const std::string& path = scratch.path();
   FuzzedDataProvider input(data, size);
   const taa::io::AovLayout layout = layoutFrom(input, path);
   std::string file = input.ConsumeRemainingBytesAsString();
@@ -60,8 +59,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   // refusal, which tests/io/frame_reader_test.cpp covers.
   static const char kMagic[4] = {0x76, 0x2f, 0x31, 0x01};
   file.replace(0, std::min<std::size_t>(file.size(), 4), kMagic, 4);
-  std::ofstream(path, std::ios::binary | std::ios::trunc).write(file.data(),
-                                                                std::streamsize(file.size()));
+  scratch.write(file.data(), file.size());
   try {
     const taa::io::FrameData frame = taa::io::readFrame(layout, 1);
     const taa::Image color = frame.color.toFloat();
