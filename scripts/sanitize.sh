@@ -23,7 +23,7 @@ cd "$build"
 # (scripts/sanitizers/rerun_tracer_crashes.py; the cause seen so far is turned off in
 # environment.sh, this stays for any other); any other failure fails the suite at once.
 run_suite() {
-    LD_PRELOAD="$asan_preload" ctest --output-on-failure --output-junit sanitize-junit.xml "$@"
+    LD_PRELOAD="$asan_preload" ctest --output-on-failure --timeout 1200 --output-junit sanitize-junit.xml "$@"
 }
 if ! run_suite -j"$(nproc)" -LE '^(blender|slurm|install)$'; then
     for attempt in 1 2; do

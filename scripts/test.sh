@@ -6,4 +6,6 @@ build="${TAA_BUILD_DIR:-$root/build}"
 bash "$root/scripts/install-deps.sh"
 bash "$root/scripts/build.sh"
 cd "$build"
-ctest --output-on-failure -j"$(nproc)"
+# Every test without a TIMEOUT of its own (the Python, shell and fixture tests) gets 1200 s:
+# a hung one fails under its name rather than holding the run to CI's limit.
+ctest --output-on-failure --timeout 1200 -j"$(nproc)"
