@@ -307,10 +307,25 @@ layout(location = 2) out vec4 outStrataShares;
 ivec2 gSize;
 vec2 gPosition;
 float gNearest, gFarthest;
+float gSplit, gNearDepth, gFarDepth;  // the 3x3's surfaces (main)
 float gThinDepth;  // a surface nearer than all of t's 3x3 samples: seen by t's samples around
                    // the pixel, or revealed by carried ones
 vec4 gSum;         // t's own samples, its reconstruction, thin features
 float gWeight;
+// Two clusters (--window-two-clusters): where t's 3x3 spans two surfaces, the near one's
+// samples and the rest are averaged apart and mixed by the near one's coverage. A plain mean
+// counts every far sample that lands inside the near surface's footprint at t from a frame
+// where parallax had the near surface elsewhere: a wire 1.7 px wide got half its weight there
+// and came out dashed (docs/TUNING.md, "Two clusters"). The beauty alone, as the strata.
+#define TWO_CLUSTERS STRATA
+#if TWO_CLUSTERS
+uniform bool uTwoClusters;
+// The near surface's samples' weight and sum, and the weight every gathered grid point would
+// have had were the near surface there (carried at its depth): their ratio is its coverage
+// around the pixel centre, whatever else lands inside its footprint.
+float gNearWeight, gExpectedWeight, gSourceNearWeight, gSourceExpected;
+vec4 gNearSum, gSourceNearSum;
+#endif
 // The source being gathered, kept apart until it is weighed whole (agreementWeight): its
 // samples' weight, weighted colour and weighted luma squared; and the counts for diagnostics.
 float gSourceWeight;
@@ -396,7 +411,8 @@ void addStaticSample(ivec2 corner, ivec2 step, bool skip, ivec2 taken, float fra
   vec2 s = vec2(step);
   vec3 a = along + s.x * gToTargetAlong[0] + s.y * gToTargetAlong[1];
   bool far = isinf(depth);
-  vec3 h = far ? a : depth * a + offset + s.x * gToTargetOffset[0] + s.y * gToTargetOffset[1];
+  vec3 sampleOffset = offset + s.x * gToTargetOffset[0] + s.y * gToTargetOffset[1];
+  vec3 h = far ? a : depth * a + sampleOffset;
   vec2 carriedTo = h.xy * (1.0 / h.z);  // where the sample lands in t
   vec2 landed = carriedTo - gPosition;
   float weight = spatialWeight(landed, uSigma);
@@ -428,6 +444,24 @@ void addStaticSample(ivec2 corner, ivec2 step, bool skip, ivec2 taken, float fra
   gSum += thinWeight * entry.colour;
   gWeight += thinWeight;
   addSourceSample(entry.colour, thin ? 0.0 : kept);
+#if TWO_CLUSTERS
+  {
+    // The near surface's depth in the source at this grid point: the one that carries to
+    // gNearDepth at t (carriedDepth is affine in the source's depth).
+    float depthScale = depthAlong + dot(s, gToTargetDepthAlong.xy);
+    float nearInSource = (gNearDepth - depthOffset - dot(s, gToTargetDepthOffset.xy)) / depthScale;
+    vec3 nearH = nearInSource * a + sampleOffset;
+    gSourceExpected += wanted ? spatialWeight(nearH.xy / nearH.z - gPosition, uSigma) : 0.0;
+    // Thin features are nearer still: they count as the near surface's, weighed as they
+    // entered the sums (frame weight, no colour test).
+    bool onNear = carriedDepth <= gNearest * (1.0 + gSplit);
+    float nearKept = onNear && !thin ? kept : 0.0;
+    gSourceNearWeight += nearKept;
+    gSourceNearSum += nearKept * entry.colour;
+    gNearWeight += thinWeight;
+    gNearSum += thinWeight * entry.colour;
+  }
+#endif
   ADD_TO_QUADRANTS(gQuadrants, entry.colour, thinWeight, landed)
   ADD_TO_QUADRANTS(gSourceQuadrants, entry.colour, thin ? 0.0 : kept, landed)
   ivec2 texel = clamp(n, ivec2(0), gSize - 1);
@@ -490,7 +524,6 @@ void addMovingBlock(vec2 chained, bool alive) {
 bool gAnyMoving;   // t's 3x3 has a moving sample
 bool gNearMoving;  // a moving sample of t is near (the region test's stricter tolerance)
 bool gTwoSurfaces;
-float gSplit, gNearDepth, gFarDepth;
 float gOwnLuma, gOwnWeight;
 vec4 gOwnMean, gSettleTolerance;
 vec2 gReach;                   // the tile test's reach behind and ahead, in frames
@@ -548,6 +581,11 @@ void gatherSource(int k, bool withChains) {
 #endif
   gSourceLumaSum = 0.0;
   gSourceLumaSquares = 0.0;
+#if TWO_CLUSTERS
+  gSourceNearWeight = 0.0;
+  gSourceExpected = 0.0;
+  gSourceNearSum = vec4(0.0);
+#endif
 #if PASS_GROUPS > 0 || CRYPTOMATTE
   gSourcePassLayer = uSourcePassLayer[k];
 #endif
@@ -658,6 +696,11 @@ void gatherSource(int k, bool withChains) {
 #endif
     gWeight += agreement * frameWeight * gSourceWeight;
     gDisagreeing += (1.0 - agreement) * gSourceWeight;
+#if TWO_CLUSTERS
+    gNearWeight += agreement * frameWeight * gSourceNearWeight;
+    gNearSum += agreement * frameWeight * gSourceNearSum;
+    gExpectedWeight += agreement * frameWeight * gSourceExpected;
+#endif
     // Pooled for the farther sources' tests. Where the pixel has a moving sample, a source's
     // spread counts up to kMovingSpreadCap times what is pooled so far: a chain whose block
     // straddles an edge the pixel does not have (a step astray on a tumbling object) brings
@@ -697,6 +740,11 @@ void main() {
   gCandidates = 0.0;
   gHidden = 0.0;
   gDisagreeing = 0.0;
+#if TWO_CLUSTERS
+  gNearWeight = 0.0;
+  gExpectedWeight = 0.0;
+  gNearSum = vec4(0.0);
+#endif
 
   // Frame t: its own samples, its filtered reconstruction, its depths.
   vec4 filtered = vec4(0.0);
@@ -823,6 +871,19 @@ void main() {
   gSplit = split;
   gNearDepth = nearDepth;
   gFarDepth = farDepth;
+#if TWO_CLUSTERS
+  // t's own samples: the 3x3's near ones (as the surfaces were split above) and all nine.
+  for (int i = 0; i < 9; ++i) {
+    ivec2 wanted = pixel + ivec2(i % 3 - 1, i / 3 - 1);
+    ivec2 n = clamp(wanted, ivec2(0), gSize - 1);
+    float w = wanted == n ? spatialWeight(vec2(n) + 0.5 + uTargetJitter - gPosition, uSigma)
+                          : 0.0;
+    bool onNear = depths[i] <= gNearest * (1.0 + split);
+    gExpectedWeight += w;
+    gNearWeight += onNear ? w : 0.0;
+    gNearSum += onNear ? w * ringSample(n, uTargetLayer).colour : vec4(0.0);
+  }
+#endif
 
   // Settling: one flat surface, nothing thin or moving near, t's 3x3 within the tolerance.
   gOwnMean = ownSum / ownWeight;
@@ -924,6 +985,16 @@ void main() {
   vec4 resolved = gSum / gWeight;
 #if STRATA
   resolved = uStrata ? stratifiedMean(gQuadrants, resolved) : resolved;
+#if TWO_CLUSTERS
+  // Two surfaces: each cluster's mean, by the near one's coverage.
+  float farWeight = gWeight - gNearWeight;
+  if (uTwoClusters && gTwoSurfaces && !gAnyMoving && gNearWeight > 0.0 && farWeight > 1e-3 &&
+      gExpectedWeight > 0.0) {
+    float coverage = clamp(gNearWeight / gExpectedWeight, 0.0, 1.0);
+    resolved = coverage * (gNearSum / gNearWeight) +
+               (1.0 - coverage) * ((gSum - gNearSum) / farWeight);
+  }
+#endif
   outStrataShares = uStrata ? strataShares(gQuadrants, gWeight) : vec4(1.0 / gWeight);
 #endif
   vec4 working = withinWorkingRange(resolved, rgbMin, rgbMax);
@@ -959,5 +1030,6 @@ void main() {
   float rejected = gHidden + gDisagreeing;
   outDebug = vec4(gWeight, gCandidates > 0.0 ? min(rejected / gCandidates, 1.0) : 0.0,
                   gCandidates, 0.0);
+
 #endif
 }

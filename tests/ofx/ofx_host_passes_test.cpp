@@ -192,15 +192,17 @@ TEST_F(OfxHostPassesTest, FactorNearestAndCryptomatteAreTaatoolsResolve) {
 }
 
 // Light passes take the plain mean (their sums add up to the colour beside them); the Source's
-// own effect, stratified by default, gives that colour with Window Strata off: the beauty of
-// taatool's run with every pass, bit for bit.
+// own effect, stratified and in two clusters by default, gives that colour with Window Strata
+// and Window Two Clusters off: the beauty of taatool's run with every pass, bit for bit.
 TEST_F(OfxHostPassesTest, WindowStrataOffGivesTheBeautyThePassesAddUpTo) {
   auto source = instance(false, kLast, {});
   setPassKind(*source, 0);  // mode and window as the pass effects'; no Pass clip
   const Image beauty = taatoolPass(4, {"R", "G", "B", "A"});
   EXPECT_GT(maxDifference(render(*source, 4), beauty), 1e-4f);
-  source->params.at("windowStrata").intValue = 0;
-  EXPECT_EQ(host_.parameterChanged(*source, "windowStrata"), kOfxStatOK);
+  for (const char* name : {"windowStrata", "windowTwoClusters"}) {
+    source->params.at(name).intValue = 0;
+    EXPECT_EQ(host_.parameterChanged(*source, name), kOfxStatOK);
+  }
   EXPECT_EQ(maxDifference(render(*source, 4), beauty), 0.0f);
   destroy(source);
 }

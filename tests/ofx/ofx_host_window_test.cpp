@@ -61,6 +61,9 @@ TEST_F(OfxHostWindowTest, ParametersHaveTheLibrarysDefaults) {
   ASSERT_TRUE(params.count("windowStrata"));
   EXPECT_EQ(params.at("windowStrata").props.getInt(kOfxParamPropDefault),
             defaults.strata ? 1 : 0);
+  ASSERT_TRUE(params.count("windowTwoClusters"));
+  EXPECT_EQ(params.at("windowTwoClusters").props.getInt(kOfxParamPropDefault),
+            defaults.twoClusters ? 1 : 0);
   EXPECT_DOUBLE_EQ(params.at("windowColourTolerance").props.getDouble(kOfxParamPropDefault),
                    double(defaults.colourTolerance));
   EXPECT_DOUBLE_EQ(params.at("windowStaticTolerance").props.getDouble(kOfxParamPropDefault),

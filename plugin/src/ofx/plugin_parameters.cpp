@@ -24,6 +24,7 @@ constexpr const char* kWindowSigma = "windowSigma";
 constexpr const char* kWindowFalloff = "windowFalloff";
 constexpr const char* kWindowTaper = "windowTaper";
 constexpr const char* kWindowStrata = "windowStrata";
+constexpr const char* kWindowTwoClusters = "windowTwoClusters";
 constexpr const char* kWindowColourTolerance = "windowColourTolerance";
 constexpr const char* kWindowStaticTolerance = "windowStaticTolerance";
 constexpr const char* kWindowReconstructionWeight = "windowReconstructionWeight";
@@ -156,7 +157,7 @@ void require(taa_node* node, taa_status status) {
 bool PluginSettings::operator==(const PluginSettings& o) const {
   auto tie = [](const PluginSettings& s) {
     return std::tie(s.mode, s.windowRadius, s.windowNear, s.windowMoving, s.windowSigma, s.windowFalloff, s.windowTaper,
-                    s.windowStrata,
+                    s.windowStrata, s.windowTwoClusters,
                     s.windowColourTolerance, s.windowStaticTolerance,
                     s.windowReconstructionWeight, s.blend, s.rectify, s.dilateMotion, s.jitter,
                     s.jitterOffset, s.jitterPeriod, s.motionY, s.motionTo, s.motionScale,
@@ -203,9 +204,16 @@ void defineParameters(OfxParamSetHandle set) {
   defineBoolean(set, kWindowStrata, "Window Strata",
                 "Window mode: average the means of the four quadrants around the pixel centre "
                 "(samples land at random). A Cryptomatte pass follows it; light, factor and "
-                "average passes take the plain mean: turn it off on the Source's own effect for "
-                "a beauty those passes add up to (taatool --window-strata).",
+                "average passes take the plain mean: turn it and Window Two Clusters off on the "
+                "Source's own effect for a beauty those passes add up to (taatool "
+                "--window-strata).",
                 window.strata);
+  defineBoolean(set, kWindowTwoClusters, "Window Two Clusters",
+                "Window mode: where a pixel's own samples span two depths, average the near "
+                "surface's samples and the far one's apart and mix them by the near one's "
+                "coverage, so edges and wires keep their width. The beauty alone, as Window "
+                "Strata (taatool --window-two-clusters).",
+                window.twoClusters);
   defineDouble(set, kWindowColourTolerance, "Window Colour Tolerance",
                "Window mode: how far outside the frame's own colour box a sample may be; 0 turns "
                "the test off (taatool --window-colour-tolerance).",
@@ -328,6 +336,7 @@ PluginSettings readSettings(OfxImageEffectHandle effect, OfxTime time) {
   s.windowFalloff = getDouble(set, kWindowFalloff, time);
   s.windowTaper = getInt(set, kWindowTaper, time) != 0;
   s.windowStrata = getInt(set, kWindowStrata, time) != 0;
+  s.windowTwoClusters = getInt(set, kWindowTwoClusters, time) != 0;
   s.windowColourTolerance = getDouble(set, kWindowColourTolerance, time);
   s.windowStaticTolerance = getDouble(set, kWindowStaticTolerance, time);
   s.windowReconstructionWeight = getDouble(set, kWindowReconstructionWeight, time);
@@ -363,6 +372,8 @@ void applySettings(taa_node* node, const PluginSettings& s, RenderScale scale) {
   require(node, taa_node_set_float(node, "window-falloff", float(s.windowFalloff)));
   require(node, taa_node_set_string(node, "window-taper", s.windowTaper ? "on" : "off"));
   require(node, taa_node_set_string(node, "window-strata", s.windowStrata ? "on" : "off"));
+  require(node, taa_node_set_string(node, "window-two-clusters",
+                                    s.windowTwoClusters ? "on" : "off"));
   require(node, taa_node_set_float(node, "window-colour-tolerance",
                                    float(s.windowColourTolerance)));
   require(node, taa_node_set_float(node, "window-static-tolerance",

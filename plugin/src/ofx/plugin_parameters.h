@@ -26,6 +26,7 @@ struct PluginSettings {
   double windowFalloff = taa::WindowOptions{}.falloff;
   bool windowTaper = taa::WindowOptions{}.taper;
   bool windowStrata = taa::WindowOptions{}.strata;
+  bool windowTwoClusters = taa::WindowOptions{}.twoClusters;
   double windowColourTolerance = taa::WindowOptions{}.colourTolerance;
   double windowStaticTolerance = taa::WindowOptions{}.staticTolerance;
   double windowReconstructionWeight = taa::WindowOptions{}.reconstructionWeight;

@@ -236,6 +236,12 @@ std::vector<Entry> makeEntries() {
        "and its Cryptomatte: with other passes every channel takes the plain mean)"},
       &WindowOptions::strata));
   entries.push_back(windowSwitchOption(
+      {"window-two-clusters", "Mode", "", "", "window mode: where a pixel's own samples span "
+       "two depths, average the near surface's samples and the far one's apart and mix them "
+       "by the near one's coverage (edges and wires keep their width; the beauty alone, as "
+       "--window-strata)"},
+      &WindowOptions::twoClusters));
+  entries.push_back(windowSwitchOption(
       {"window-adaptive", "Mode", "", "", "window mode: end each side of a pixel's window at "
        "the first frame whose samples disagree with the nearer frames'"},
       &WindowOptions::adaptive));

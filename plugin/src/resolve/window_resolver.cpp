@@ -860,6 +860,9 @@ struct WindowResolver::Impl {
       p.set("uOwnFallbackGathered", WindowOptions::kOwnFallbackGathered);
       p.set("uSurroundings", surroundingsUnit());
       p.set("uStrata", options.window.strata ? 1 : 0);
+      // Not with passes or Cryptomatte: the passes take the plain mean, and the mattes weigh
+      // each sample as the beauty's strata do (the two together add up, as the beauty's own).
+      p.set("uTwoClusters", options.window.twoClusters && !hasPasses() ? 1 : 0);
       p.set("uAdaptive", options.window.adaptive ? 1 : 0);
       p.set("uTiles", tiles ? 1 : 0);
       p.set("uTileSize", kTileSize);
