@@ -451,7 +451,8 @@ void addStaticSample(ivec2 corner, ivec2 step, bool skip, ivec2 taken, float fra
     float depthScale = depthAlong + dot(s, gToTargetDepthAlong.xy);
     float nearInSource = (gNearDepth - depthOffset - dot(s, gToTargetDepthOffset.xy)) / depthScale;
     vec3 nearH = nearInSource * a + sampleOffset;
-    gSourceExpected += wanted ? spatialWeight(nearH.xy / nearH.z - gPosition, uSigma) : 0.0;
+    bool carries = wanted && abs(depthScale) > 1e-12 && nearH.z > 0.0;  // else no such point
+    gSourceExpected += carries ? spatialWeight(nearH.xy / nearH.z - gPosition, uSigma) : 0.0;
     // Thin features are nearer still: they count as the near surface's, weighed as they
     // entered the sums (frame weight, no colour test).
     bool onNear = carriedDepth <= gNearest * (1.0 + gSplit);
@@ -986,7 +987,8 @@ void main() {
 #if STRATA
   resolved = uStrata ? stratifiedMean(gQuadrants, resolved) : resolved;
 #if TWO_CLUSTERS
-  // Two surfaces: each cluster's mean, by the near one's coverage.
+  // Two surfaces: each cluster's mean, by the near one's coverage (the reconstruction's small
+  // weight, a mix of both, stays with the rest).
   float farWeight = gWeight - gNearWeight;
   if (uTwoClusters && gTwoSurfaces && !gAnyMoving && gNearWeight > 0.0 && farWeight > 1e-3 &&
       gExpectedWeight > 0.0) {
@@ -1030,6 +1032,5 @@ void main() {
   float rejected = gHidden + gDisagreeing;
   outDebug = vec4(gWeight, gCandidates > 0.0 ? min(rejected / gCandidates, 1.0) : 0.0,
                   gCandidates, 0.0);
-
 #endif
 }
