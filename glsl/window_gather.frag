@@ -767,6 +767,10 @@ void main() {
 #endif
   float depths[9];
   float signedDepths[9];
+#if TWO_CLUSTERS
+  float ownWeights[9];  // t's own samples' weights and colours, for the near cluster (below)
+  vec4 ownColours[9];
+#endif
   float movingDepth = 1.0 / 0.0;
   ivec2 movingAt = pixel;  // the nearest moving sample of the 3x3, if any
   bool anyMoving = false;
@@ -795,6 +799,10 @@ void main() {
       // Border texels repeat: count each sample once.
       float w = wanted == n ? spatialWeight(vec2(n) + 0.5 + uTargetJitter - gPosition, uSigma)
                             : 0.0;
+#if TWO_CLUSTERS
+      ownWeights[3 * (dy + 1) + dx + 1] = w;
+      ownColours[3 * (dy + 1) + dx + 1] = colour;
+#endif
       float y = decisionLuma(colour);
       ADD_CRYPTO(n, uTargetPassLayer, w, false, vec2(n) + 0.5 + uTargetJitter - gPosition)
       ownWeight += w;
@@ -874,15 +882,11 @@ void main() {
   gFarDepth = farDepth;
 #if TWO_CLUSTERS
   // t's own samples: the 3x3's near ones (as the surfaces were split above) and all nine.
+  gExpectedWeight += ownWeight;
   for (int i = 0; i < 9; ++i) {
-    ivec2 wanted = pixel + ivec2(i % 3 - 1, i / 3 - 1);
-    ivec2 n = clamp(wanted, ivec2(0), gSize - 1);
-    float w = wanted == n ? spatialWeight(vec2(n) + 0.5 + uTargetJitter - gPosition, uSigma)
-                          : 0.0;
     bool onNear = depths[i] <= gNearest * (1.0 + split);
-    gExpectedWeight += w;
-    gNearWeight += onNear ? w : 0.0;
-    gNearSum += onNear ? w * ringSample(n, uTargetLayer).colour : vec4(0.0);
+    gNearWeight += onNear ? ownWeights[i] : 0.0;
+    gNearSum += onNear ? ownWeights[i] * ownColours[i] : vec4(0.0);
   }
 #endif
 
