@@ -121,8 +121,8 @@ struct WindowOptions {
   // would have had were it everywhere. A plain mean counts the far surface's samples that land
   // inside the near one's footprint from frames where parallax had it elsewhere, and thins
   // every edge and wire (the 1080p fence: 1.7 px power lines dashed, +5.4 dB on frame 12;
-  // docs/TUNING.md, "Two clusters"). Like strata, the beauty alone: with light, factor or
-  // averaged passes the plain mean serves the beauty too, so that the passes still add up.
+  // docs/TUNING.md, "Two clusters"). The beauty alone: with light, factor or averaged passes
+  // or Cryptomatte the plain mean serves the beauty too, so that passes and mattes still add up.
   bool twoClusters = true;
   // Each side of a pixel's window ends at the first source frame whose samples disagree with
   // what the nearer frames gave (the colour test): a long window where the shot holds still,
