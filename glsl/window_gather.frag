@@ -48,9 +48,8 @@
 #ifndef TILE_STATS
 #define TILE_STATS 0  // 1: the tile test's input, per sampled pixel and source (uStatsStride)
 #endif
-// The quadrants' sums (--window-strata) in the beauty's own gather. A run with pass groups
-// takes its colour from the pass draws, whose plain sums it shares with the passes so that they
-// still add up to it; Cryptomatte's draws weigh IDs by the plain sample weights.
+// The quadrants' sums (--window-strata) in the beauty's own draw: the pass and Cryptomatte
+// draws that follow it weigh their samples by its shares (SHARES, below).
 #define STRATA (PASS_GROUPS == 0 && CRYPTOMATTE == 0 && TILE_STATS == 0)
 #ifndef CHAINS
 #define CHAINS 1  // 0: no frame of the window has moving samples; the chains' code is left out
@@ -195,6 +194,27 @@ vec4 quadrantOf(vec2 offset) {
   float up = offset.y >= 0.0 ? 1.0 : 0.0;
   return vec4((1.0 - right) * (1.0 - up), right * (1.0 - up), (1.0 - right) * up, right * up);
 }
+// The draws that sum passes and Cryptomatte IDs follow the beauty's draw, which runs first and
+// writes what each of its samples counts for in the resolved colour (outShares): they weigh a
+// sample's values by its weight times that factor, so that a relation linear per sample
+// (Combined = the light passes' sum; a matte and the beauty's edge) holds for the beauty's
+// stratified or two-cluster mean as it would for a plain one. The factors: four, by the
+// quadrant around the pixel centre a sample falls in (strataShares; 1 / weight each with
+// strata off), or where the beauty took two clusters (near, rest, 0, -1): one for the near
+// surface's samples and one for the others.
+#define SHARES (PASS_GROUPS > 0 || CRYPTOMATTE)
+#if SHARES
+uniform sampler2D uShares;
+vec4 gShares;
+float shareOf(vec2 offset, bool onNear) {
+  return gShares.w < 0.0 ? (onNear ? gShares.x : gShares.y) : dot(gShares, quadrantOf(offset));
+}
+// t's filtered reconstruction, a quarter in each quadrant (or in the rest's cluster).
+float reconstructionShare() { return gShares.w < 0.0 ? gShares.y : dot(gShares, vec4(0.25)); }
+#define SHARE(offset, onNear) shareOf(offset, onNear)
+#else
+#define SHARE(offset, onNear) 1.0
+#endif
 #if CRYPTOMATTE
 #include "window_cryptomatte.glsl"
 // Rank layers 0..2: id, coverage, id, coverage.
@@ -203,27 +223,20 @@ layout(rgba32f) uniform writeonly image2D uCryptoOutputs[3];  // at the band's r
 #else
 layout(location = 2) out vec4 outCrypto[3];
 #endif
-// What each quadrant's samples count for in the beauty's stratified mean (outStrataShares, the
-// beauty's draw); without it (a run whose colour comes from the pass draws) every sample
-// counts by its weight alone, as in the plain mean.
-uniform bool uHasStrataShares;
-uniform sampler2D uStrataShares;
-vec4 gStrataShares;
-#define CRYPTO_WEIGHT(weight, offset) ((weight) * dot(gStrataShares, quadrantOf(offset)))
-#define ADD_CRYPTO(texel, layer, weight, toSource, offset) \
-  cryptoAddSample(texel, layer, CRYPTO_WEIGHT(weight, offset), toSource);
+// A sample's IDs with `weight` (its share included) into the pixel's slots or the source's.
+#define ADD_CRYPTO(texel, layer, weight, toSource) \
+  cryptoAddSample(texel, layer, weight, toSource);
 // A sample into the pixel's slots with `weight` and the source's with `sourceWeight`, fetched
 // once.
-#define ADD_CRYPTO_TWICE(texel, layer, weight, sourceWeight, offset)            \
+#define ADD_CRYPTO_TWICE(texel, layer, weight, sourceWeight)                    \
   {                                                                             \
     vec4 cryptoRanks = texelFetch(uCrypto, ivec3((texel), (layer)), 0);         \
-    float cryptoShare = dot(gStrataShares, quadrantOf(offset));                 \
-    cryptoAddRanks(cryptoRanks, (weight) * cryptoShare, false);                 \
-    cryptoAddRanks(cryptoRanks, (sourceWeight) * cryptoShare, true);            \
+    cryptoAddRanks(cryptoRanks, weight, false);                                 \
+    cryptoAddRanks(cryptoRanks, sourceWeight, true);                            \
   }
 #else
-#define ADD_CRYPTO(texel, layer, weight, toSource, offset)
-#define ADD_CRYPTO_TWICE(texel, layer, weight, sourceWeight, offset)
+#define ADD_CRYPTO(texel, layer, weight, toSource)
+#define ADD_CRYPTO_TWICE(texel, layer, weight, sourceWeight)
 #endif
 #if PASS_GROUPS > 0
 uniform sampler2DArray uPasses[PASS_GROUPS];
@@ -292,13 +305,14 @@ vec4 stratifiedMean(Quadrants q, vec4 plainMean) {
 }
 // The stratified mean is linear in the samples: a sample of weight w in quadrant i counts
 // w x (share_i + prior x sum(share) / plainWeight), share = 0.25 / (quadrant weight + prior).
-// Those four factors, written beside the colour, let a Cryptomatte draw weigh its IDs as the
-// beauty weighs their samples (with strata off, 1 / plainWeight each: the plain mean's).
+// Those four factors, written beside the colour (outShares), let the pass and Cryptomatte draws
+// weigh their values as the beauty weighs their samples (with strata off, 1 / plainWeight
+// each: the plain mean's).
 vec4 strataShares(Quadrants q, float plainWeight) {
   vec4 share = 0.25 / (q.weights + kQuadrantPrior);
   return share + kQuadrantPrior * dot(share, vec4(1.0)) / plainWeight;
 }
-layout(location = 2) out vec4 outStrataShares;
+layout(location = 2) out vec4 outShares;
 #define ADD_TO_QUADRANTS(q, colour, weight, offset) addToQuadrants(q, colour, weight, offset);
 #else
 #define ADD_TO_QUADRANTS(q, colour, weight, offset)
@@ -316,7 +330,7 @@ float gWeight;
 // samples and the rest are averaged apart and mixed by the near one's coverage. A plain mean
 // counts every far sample that lands inside the near surface's footprint at t from a frame
 // where parallax had the near surface elsewhere: a wire 1.7 px wide got half its weight there
-// and came out dashed (docs/TUNING.md, "Two clusters"). The beauty alone, as the strata.
+// and came out dashed (docs/TUNING.md, "Two clusters"). In the beauty's draw, as the strata.
 #define TWO_CLUSTERS STRATA
 #if TWO_CLUSTERS
 uniform bool uTwoClusters;
@@ -444,6 +458,8 @@ void addStaticSample(ivec2 corner, ivec2 step, bool skip, ivec2 taken, float fra
   gSum += thinWeight * entry.colour;
   gWeight += thinWeight;
   addSourceSample(entry.colour, thin ? 0.0 : kept);
+  // On t's near surface (thin features are nearer still and count as its): the two clusters'.
+  bool onNear = carriedDepth <= gNearest * (1.0 + gSplit);
 #if TWO_CLUSTERS
   {
     // The near surface's depth in the source at this grid point: the one that carries to
@@ -453,9 +469,7 @@ void addStaticSample(ivec2 corner, ivec2 step, bool skip, ivec2 taken, float fra
     vec3 nearH = nearInSource * a + sampleOffset;
     bool carries = wanted && abs(depthScale) > 1e-12 && nearH.z > 0.0;  // else no such point
     gSourceExpected += carries ? spatialWeight(nearH.xy / nearH.z - gPosition, uSigma) : 0.0;
-    // Thin features are nearer still: they count as the near surface's, weighed as they
-    // entered the sums (frame weight, no colour test).
-    bool onNear = carriedDepth <= gNearest * (1.0 + gSplit);
+    // Thin features weigh as they entered the sums (frame weight, no colour test).
     float nearKept = onNear && !thin ? kept : 0.0;
     gSourceNearWeight += nearKept;
     gSourceNearSum += nearKept * entry.colour;
@@ -466,9 +480,10 @@ void addStaticSample(ivec2 corner, ivec2 step, bool skip, ivec2 taken, float fra
   ADD_TO_QUADRANTS(gQuadrants, entry.colour, thinWeight, landed)
   ADD_TO_QUADRANTS(gSourceQuadrants, entry.colour, thin ? 0.0 : kept, landed)
   ivec2 texel = clamp(n, ivec2(0), gSize - 1);
-  ADD_PASSES_TWICE(gPassSum, thinWeight, gSourcePassSum, thin ? 0.0 : kept, texel,
-                   gSourcePassLayer)
-  ADD_CRYPTO_TWICE(texel, gSourcePassLayer, thinWeight, thin ? 0.0 : kept, landed)
+  float thinShared = thinWeight * SHARE(landed, true);
+  float keptShared = (thin ? 0.0 : kept) * SHARE(landed, onNear);
+  ADD_PASSES_TWICE(gPassSum, thinShared, gSourcePassSum, keptShared, texel, gSourcePassLayer)
+  ADD_CRYPTO_TWICE(texel, gSourcePassLayer, thinShared, keptShared)
 }
 
 // The static samples of the current source in the 2x2 block at `corner` (with `skip`, those
@@ -497,17 +512,16 @@ void addStaticBlock(ivec2 corner, bool skip, ivec2 taken, float frameWeight) {
 void addMovingSample(ivec2 corner, ivec2 step, vec2 chained, bool alive) {
   ivec2 n = corner + step;
   RingSample entry = ringSample(clamp(n, ivec2(0), gSize - 1), gSourceLayer);
-  float weight = spatialWeight(vec2(n) + 0.5 + gSourceJitter - chained, uSigma);
+  vec2 offset = vec2(n) + 0.5 + gSourceJitter - chained;
+  float weight = spatialWeight(offset, uSigma);
   // Static samples are the cameras'.
   bool candidate = alive && onScreen(n) && entry.depth < 0.0 && weight >= 1e-3;
   gCandidates += candidate ? 1.0 : 0.0;
   addSourceSample(entry.colour, candidate ? weight : 0.0);
-  ADD_TO_QUADRANTS(gSourceQuadrants, entry.colour, candidate ? weight : 0.0,
-                   vec2(n) + 0.5 + gSourceJitter - chained)
-  ADD_PASSES(gSourcePassSum, clamp(n, ivec2(0), gSize - 1), gSourcePassLayer,
-             candidate ? weight : 0.0)
-  ADD_CRYPTO(clamp(n, ivec2(0), gSize - 1), gSourcePassLayer, candidate ? weight : 0.0, true,
-             vec2(n) + 0.5 + gSourceJitter - chained)
+  ADD_TO_QUADRANTS(gSourceQuadrants, entry.colour, candidate ? weight : 0.0, offset)
+  float movingShared = candidate ? weight * SHARE(offset, false) : 0.0;
+  ADD_PASSES(gSourcePassSum, clamp(n, ivec2(0), gSize - 1), gSourcePassLayer, movingShared)
+  ADD_CRYPTO(clamp(n, ivec2(0), gSize - 1), gSourcePassLayer, movingShared, true)
 }
 
 // The moving samples of the current source in the 2x2 block around the chained point, if the
@@ -758,7 +772,9 @@ void main() {
   float alphaMin = 1e30, alphaMax = -1e30;
 #if CRYPTOMATTE
   cryptoBegin();
-  gStrataShares = uHasStrataShares ? texelFetch(uStrataShares, pixel, 0) : vec4(1.0);
+#endif
+#if SHARES
+  gShares = texelFetch(uShares, pixel, 0);
 #endif
 #if PASS_GROUPS > 0
   // t's own samples' pass values are added after the sources, fetched once for every weight
@@ -804,7 +820,6 @@ void main() {
       ownColours[3 * (dy + 1) + dx + 1] = colour;
 #endif
       float y = decisionLuma(colour);
-      ADD_CRYPTO(n, uTargetPassLayer, w, false, vec2(n) + 0.5 + uTargetJitter - gPosition)
       ownWeight += w;
       ownSum += w * colour;
       ADD_TO_QUADRANTS(gQuadrants, colour, w, vec2(n) + 0.5 + uTargetJitter - gPosition)
@@ -974,11 +989,15 @@ void main() {
     vec4 colour = ringSample(n, uTargetLayer).colour;
     addSample(colour, w);
     ADD_TO_QUADRANTS(gQuadrants, colour, w, offset)
-    ADD_CRYPTO(n, uTargetPassLayer, w, false, offset)
 #endif
+#if SHARES
     float own = wanted == n ? spatialWeight(offset, uSigma) : 0.0;
+    bool ownNear = depths[i] <= gNearest * (1.0 + gSplit);
+    float ownShared = own * shareOf(offset, ownNear) + w * shareOf(offset, false);
+    ADD_CRYPTO(n, uTargetPassLayer, ownShared, false)
     ADD_PASSES(gPassSum, n, uTargetPassLayer,
-               own + uReconstructionWeight * uReconstruction[i] + w)
+               ownShared + uReconstructionWeight * uReconstruction[i] * reconstructionShare())
+#endif
   }
 #endif
 #if TILE_STATS
@@ -990,6 +1009,7 @@ void main() {
   vec4 resolved = gSum / gWeight;
 #if STRATA
   resolved = uStrata ? stratifiedMean(gQuadrants, resolved) : resolved;
+  vec4 shares = uStrata ? strataShares(gQuadrants, gWeight) : vec4(1.0 / gWeight);
 #if TWO_CLUSTERS
   // Two surfaces: each cluster's mean, by the near one's coverage (the reconstruction's small
   // weight, a mix of both, stays with the rest).
@@ -999,9 +1019,10 @@ void main() {
     float coverage = clamp(gNearWeight / gExpectedWeight, 0.0, 1.0);
     resolved = coverage * (gNearSum / gNearWeight) +
                (1.0 - coverage) * ((gSum - gNearSum) / farWeight);
+    shares = vec4(coverage / gNearWeight, (1.0 - coverage) / farWeight, 0.0, -1.0);
   }
 #endif
-  outStrataShares = uStrata ? strataShares(gQuadrants, gWeight) : vec4(1.0 / gWeight);
+  outShares = shares;
 #endif
   vec4 working = withinWorkingRange(resolved, rgbMin, rgbMax);
 #if LINEAR_SUM
@@ -1014,10 +1035,9 @@ void main() {
 #if PASS_GROUPS > 0
   for (int g = 0; g < PASS_GROUPS; ++g) {
 #if PASS_IMAGES
-    imageStore(uPassOutputs[g], pixel - ivec2(0, uBandStart),
-               finitePass(gPassSum[g] / gWeight));
+    imageStore(uPassOutputs[g], pixel - ivec2(0, uBandStart), finitePass(gPassSum[g]));
 #else
-    outPasses[g] = finitePass(gPassSum[g] / gWeight);
+    outPasses[g] = finitePass(gPassSum[g]);
 #endif
   }
 #endif

@@ -178,6 +178,43 @@ TEST_F(PassesTest, EveryPassIsResolvedAndTheCompIdentityHolds) {
   }
 }
 
+// The passes are weighed as the beauty's own stratified, two-cluster mean weighs their samples
+// (window_gather.frag's shares): the beauty of a run with every pass is the beauty of a run
+// without them, bit for bit, and a light pass that is a tenth of the beauty in every sample
+// (Emit) is a tenth of it resolved (without the reconstruction's taps, which the beauty clamps
+// to its samples' range and a pass cannot). (Before, a run with passes took the plain mean for
+// the beauty and the passes alike: they agreed, but the beauty had lost its strata and
+// clusters.)
+TEST_F(PassesTest, EveryPassKeepsTheBeautyAloneAndFollowsIt) {
+  auto resolve = [&](const std::string& out, std::vector<std::string> extra) {
+    extra.insert(extra.end(), {"--window-reconstruction-weight", "0"});
+    const ToolRun r = run(extra, out);
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    return readExr(dir_ / out / frameName("r", 3));
+  };
+  const Exr withPasses = resolve("with-passes", {});
+  const Exr colourAlone = resolve("colour-alone", {"--aov", "*=drop"});
+  const Exr plain =
+      resolve("plain", {"--window-strata", "off", "--window-two-clusters", "off"});
+  std::size_t stratified = 0;
+  for (std::size_t p = 0; p < withPasses.spec.image_pixels(); ++p) {
+    for (const std::string& c : kRgb) {
+      const float beauty = withPasses.at(p, c);
+      ASSERT_EQ(beauty, colourAlone.at(p, c)) << "pixel " << p << " " << c;
+      // Both half: within their rounding (a 2^-11 relative step each).
+      ASSERT_NEAR(withPasses.at(p, "Emit." + c), 0.1f * beauty, 2e-3f * std::abs(beauty) + 1e-6f)
+          << "pixel " << p << " " << c;
+      ASSERT_NEAR(plain.at(p, "Emit." + c), 0.1f * plain.at(p, c),
+                  2e-3f * std::abs(plain.at(p, c)) + 1e-6f)
+          << "pixel " << p << " " << c;
+    }
+    stratified += std::abs(withPasses.at(p, "R") - plain.at(p, "R")) > 2e-3f;
+  }
+  // The strata and clusters were in effect: the edges' pixels differ from the plain mean's.
+  EXPECT_GT(stratified, 20u);
+  std::printf("every pass: %zu pixels of the beauty differ from the plain mean's\n", stratified);
+}
+
 // The coverage of `id` over a pixel's rank pairs: how a comp pulls a matte.
 float matteOf(const Exr& exr, std::size_t p, float id) {
   float coverage = 0.0f;

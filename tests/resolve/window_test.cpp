@@ -138,13 +138,18 @@ class WindowTest : public ::testing::Test {
     return resolveWith(resolver, scene, frame, options.window.radius);
   }
 
-  Image resolveWith(WindowResolver& resolver, const Scene& scene, int frame, int radius) {
+  // With `colourAsPass`, each frame's colour is also its one pass group (setPasses): the
+  // group's sums, resolved as a pass, go to *colourAsPass.
+  Image resolveWith(WindowResolver& resolver, const Scene& scene, int frame, int radius,
+                    Image* colourAsPass = nullptr) {
     const int first = frame - radius, last = frame + radius;
+    if (colourAsPass) resolver.setPasses({false}, 0);
     for (int f = first; f <= last; ++f) {
       if (resolver.hasFrame(f)) continue;
       const Frame data = render(scene, f);
       ResolveInput input;
       input.color = &data.color;
+      if (colourAsPass) input.passGroups = {&data.color};
       input.depth = &data.depth;
       input.motion = &data.motion;
       input.jitter = data.jitter;
@@ -153,7 +158,12 @@ class WindowTest : public ::testing::Test {
       input.ndc = NdcConvention::ZeroOneYDown;
       resolver.addFrame(f, input);
     }
-    return std::move(*resolver.resolve(frame, first, last, SampleType::Float).floats());
+    Image resolved = std::move(*resolver.resolve(frame, first, last, SampleType::Float).floats());
+    if (colourAsPass) {
+      PassSums sums = resolver.takePassSums();
+      *colourAsPass = std::move(*sums.groups.at(0).floats());
+    }
+    return resolved;
   }
 
   std::unique_ptr<gl::Context> context_;
@@ -403,6 +413,33 @@ TEST_F(WindowTest, ABarAPixelAndAHalfWideKeepsItsWidthInTwoClusters) {
   EXPECT_LT(clustersError, 0.5 * plainError)
       << "the bar's energy, error summed over rows: two clusters " << clustersError
       << ", the plain mean " << plainError;
+}
+
+// The passes are weighed as the beauty is, two clusters included (window_gather.frag's shares):
+// with the colour given again as a pass, the bar's beauty is the beauty without passes, bit
+// for bit, and the pass is that beauty (without the reconstruction's taps, which the beauty
+// clamps and a pass cannot). Before, a run with passes took the plain mean for both.
+TEST_F(WindowTest, PassesFollowTheBarsTwoClusters) {
+  const Scene scene = barBeforeBackdrop(-0.0375, 0.075, 0.2, 0.0);
+  const int frame = 10;
+  ResolveOptions options = windowOptions(8);
+  options.window.reconstructionWeight = 0.0f;
+  options.window.regionTolerance = 0.0f;  // a run with passes has no region test (its memory)
+  const Image alone = resolve(scene, frame, options);
+  Image pass;
+  WindowResolver withPasses(*context_, options);
+  const Image beauty = resolveWith(withPasses, scene, frame, 8, &pass);
+  options.window.twoClusters = false;
+  const Image plain = resolve(scene, frame, options);
+  ASSERT_EQ(pass.pixels.size(), beauty.pixels.size());
+  std::size_t clustered = 0;
+  for (std::size_t i = 0; i < beauty.pixels.size(); ++i) {
+    ASSERT_EQ(beauty.pixels[i], alone.pixels[i]) << "value " << i;
+    ASSERT_NEAR(pass.pixels[i], beauty.pixels[i], 1e-5f * std::abs(beauty.pixels[i]) + 1e-7f)
+        << "value " << i;
+    clustered += std::abs(beauty.pixels[i] - plain.pixels[i]) > 1e-3f;
+  }
+  EXPECT_GT(clustered, std::size_t(2 * kHeight));  // the bar's edges, every row
 }
 
 // A box (depth 1, colour 1) moving 2 px a frame right over a still backdrop (depth 10, 0.2),

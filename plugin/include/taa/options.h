@@ -112,17 +112,16 @@ struct WindowOptions {
   // Sum the samples apart in the four quadrants around the pixel centre and average the
   // quadrants' means: carried samples land at random, and a plain mean weighs each side of an
   // edge by how many samples happened to land there (+0.15 dB on the real-render yardstick, no
-  // real scene lower; the analytic hdr_highlights -0.37: docs/TUNING.md, "Strata"). With
-  // light, factor or averaged passes the plain mean serves the beauty too, so that the passes
-  // still add up to it; Cryptomatte's IDs are weighed as the quadrants weigh their samples.
+  // real scene lower; the analytic hdr_highlights -0.37: docs/TUNING.md, "Strata"). Passes
+  // and Cryptomatte IDs are weighed as the beauty's mean weighs their samples, so they still
+  // add up to it.
   bool strata = true;
   // Where t's 3x3 spans two surfaces, the near one's samples and the far one's are averaged
   // apart and mixed by the near surface's coverage: its samples' weight over the weight they
   // would have had were it everywhere. A plain mean counts the far surface's samples that land
   // inside the near one's footprint from frames where parallax had it elsewhere, and thins
   // every edge and wire (the 1080p fence: 1.7 px power lines dashed, +5.4 dB on frame 12;
-  // docs/TUNING.md, "Two clusters"). The beauty alone: with light, factor or averaged passes
-  // or Cryptomatte the plain mean serves the beauty too, so that passes and mattes still add up.
+  // docs/TUNING.md, "Two clusters"). Passes and mattes are weighed alike, as with strata.
   bool twoClusters = true;
   // Each side of a pixel's window ends at the first source frame whose samples disagree with
   // what the nearer frames gave (the colour test): a long window where the shot holds still,

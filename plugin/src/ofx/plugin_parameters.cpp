@@ -203,16 +203,15 @@ void defineParameters(OfxParamSetHandle set) {
                 window.taper);
   defineBoolean(set, kWindowStrata, "Window Strata",
                 "Window mode: average the means of the four quadrants around the pixel centre "
-                "(samples land at random). A Cryptomatte pass follows it; light, factor and "
-                "average passes take the plain mean: turn it and Window Two Clusters off on the "
-                "Source's own effect for a beauty those passes add up to (taatool "
-                "--window-strata).",
+                "(samples land at random). Pass effects weigh their samples as the beauty's "
+                "mean does: set it alike on the Source's effect and theirs, so the passes add "
+                "up to the beauty (taatool --window-strata).",
                 window.strata);
   defineBoolean(set, kWindowTwoClusters, "Window Two Clusters",
                 "Window mode: where a pixel's own samples span two depths, average the near "
                 "surface's samples and the far one's apart and mix them by the near one's "
-                "coverage, so edges and wires keep their width. The beauty alone, as Window "
-                "Strata (taatool --window-two-clusters).",
+                "coverage, so edges and wires keep their width. Pass effects follow it, as "
+                "Window Strata (taatool --window-two-clusters).",
                 window.twoClusters);
   defineDouble(set, kWindowColourTolerance, "Window Colour Tolerance",
                "Window mode: how far outside the frame's own colour box a sample may be; 0 turns "

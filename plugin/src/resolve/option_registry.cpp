@@ -232,14 +232,14 @@ std::vector<Entry> makeEntries() {
       &WindowOptions::opaqueMoving));
   entries.push_back(windowSwitchOption(
       {"window-strata", "Mode", "", "", "window mode: average the means of the four quadrants "
-       "around the pixel centre, not every sample alike (samples land at random; the beauty "
-       "and its Cryptomatte: with other passes every channel takes the plain mean)"},
+       "around the pixel centre, not every sample alike (samples land at random; every pass "
+       "weighed alike)"},
       &WindowOptions::strata));
   entries.push_back(windowSwitchOption(
       {"window-two-clusters", "Mode", "", "", "window mode: where a pixel's own samples span "
        "two depths, average the near surface's samples and the far one's apart and mix them "
-       "by the near one's coverage (edges and wires keep their width; the beauty alone, as "
-       "--window-strata)"},
+       "by the near one's coverage (edges and wires keep their width; every pass weighed "
+       "alike)"},
       &WindowOptions::twoClusters));
   entries.push_back(windowSwitchOption(
       {"window-adaptive", "Mode", "", "", "window mode: end each side of a pixel's window at "

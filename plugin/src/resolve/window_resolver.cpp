@@ -178,11 +178,11 @@ struct WindowResolver::Impl {
   int cryptomatteSets = 0;
   std::vector<gl::TextureArray> cryptomatteRings;  // RGBA32F, at the frames' pass layers
   std::vector<gl::Framebuffer> cryptomatteTargets;  // a set's draw: -, -, its three ranks
-  // Where the colour is the beauty's own draw (Cryptomatte without other passes), that draw's
-  // stratified mean counts each quadrant's samples by a factor of its own (window_gather.frag,
-  // strataShares); the Cryptomatte draws weigh their IDs by the same factors, so that a matte
-  // follows the beauty's edges. A run with pass groups takes its colour from their plain sums.
-  gl::Texture strataShares;
+  // With passes the beauty's own draw runs first: its stratified or two-cluster mean counts
+  // each sample by a factor of the pixel's (window_gather.frag, SHARES), which it writes here;
+  // the pass and Cryptomatte draws weigh their values by the same factors, so that the passes
+  // add up to the beauty and a matte follows its edges.
+  gl::Texture shares;
 
   // How a frame's samples were last classified (window_classify.frag's modes).
   struct Slot {
@@ -326,8 +326,9 @@ struct WindowResolver::Impl {
     const int byImages = info.fragmentImageUnits - kCryptomatteRanks;
     return std::max(kPassGroupsPerDrawBuffers, std::min(byTextures, byImages));
   }
-  // A Cryptomatte set's ring, and the beauty's strata shares at the unit after it.
+  // A Cryptomatte set's ring, and the beauty's shares at the unit after it.
   int cryptomatteUnit() const { return firstPassUnit() + passGroupsPerDraw(); }
+  int sharesUnit() const { return cryptomatteUnit() + 1; }
   // The first of passOutputs a Cryptomatte set's ranks are written to.
   int cryptomatteOutput() const {
     return passImages() ? std::min(int(passHalf.size()), passGroupsPerDraw()) : 0;
@@ -391,7 +392,6 @@ struct WindowResolver::Impl {
       regionTargets.emplace_back(gl, std::vector<gl::Attachment>{{regionStats, layer}});
     }
   }
-  bool cryptomatteFollowsStrata() const { return passHalf.empty() && cryptomatteSets > 0; }
 
   void allocatePasses() {
     passRings.clear();
@@ -400,11 +400,11 @@ struct WindowResolver::Impl {
     freePassLayers.clear();
     cryptomatteRings.clear();
     cryptomatteTargets.clear();
-    strataShares = gl::Texture();
+    shares = gl::Texture();
     gatherTarget = gl::Framebuffer();
     allocateRegionStats();
     if (!hasPasses() || width == 0) return;
-    if (cryptomatteFollowsStrata()) strataShares = gl::Texture(gl, width, height, GL_RGBA32F);
+    shares = gl::Texture(gl, width, height, GL_RGBA32F);
     for (bool half : passHalf) {
       passRings.emplace_back(gl, width, height, capacity(), half ? GL_RGBA16F : GL_RGBA32F);
     }
@@ -818,12 +818,14 @@ struct WindowResolver::Impl {
         int(cryptomatteTargets.size()) != setTargets) {
       debug = debugOutput ? gl::Texture(gl, width, height, GL_RGBA32F) : gl::Texture();
       std::vector<gl::Attachment> beautyOutputs{&output, debugOutput ? &debug : nullptr};
-      if (cryptomatteFollowsStrata()) beautyOutputs.emplace_back(&strataShares);
+      if (hasPasses()) beautyOutputs.emplace_back(&shares);
       gatherTarget = gl::Framebuffer(gl, beautyOutputs);
       gatherHasDebug = debugOutput;
       passTargets.clear();
       for (int d = 0; d < groupDraws; ++d) {
-        std::vector<gl::Attachment> attachments{&output, debugOutput ? &debug : nullptr};
+        // The colour is the beauty's draw's: not written again here (with image stores, where
+        // the sums need no attachment, the draw has the colour's, its writes masked).
+        std::vector<gl::Attachment> attachments{passImages() ? &output : nullptr, nullptr};
         for (int g = d * perDraw; g < std::min(groups, (d + 1) * perDraw) && !passImages();
              ++g) {
           attachments.emplace_back(&passOutputs[std::size_t(g - d * perDraw)]);
@@ -832,7 +834,7 @@ struct WindowResolver::Impl {
       }
       cryptomatteTargets.clear();
       for (int set = 0; set < setTargets; ++set) {
-        // The colour is the beauty's draw's, or the pass draws': not written again here.
+        // The colour is the beauty's draw's: not written again here.
         std::vector<gl::Attachment> attachments{nullptr, nullptr};
         for (int rank = 0; rank < kCryptomatteRanks; ++rank) {
           attachments.emplace_back(&passOutputs[std::size_t(cryptomatteOutput() + rank)]);
@@ -860,9 +862,7 @@ struct WindowResolver::Impl {
       p.set("uOwnFallbackGathered", WindowOptions::kOwnFallbackGathered);
       p.set("uSurroundings", surroundingsUnit());
       p.set("uStrata", options.window.strata ? 1 : 0);
-      // Not with passes or Cryptomatte: the passes take the plain mean, and the mattes weigh
-      // each sample as the beauty's strata do (the two together add up, as the beauty's own).
-      p.set("uTwoClusters", options.window.twoClusters && !hasPasses() ? 1 : 0);
+      p.set("uTwoClusters", options.window.twoClusters ? 1 : 0);
       p.set("uAdaptive", options.window.adaptive ? 1 : 0);
       p.set("uTiles", tiles ? 1 : 0);
       p.set("uTileSize", kTileSize);
@@ -887,9 +887,9 @@ struct WindowResolver::Impl {
                          return setUniforms(p, false);
                        });
     // One draw of the gather into `target`; `variant` as gatherProgram's; `bindExtra` binds the
-    // draw's own inputs. With passes, each draw weighs the samples as the beauty's draw does
-    // (the same program text and uniforms but for its outputs: the same weights, bit for bit),
-    // and each writes the colour too, the same every time.
+    // draw's own inputs. With passes, the beauty's draw comes first and writes the colour and
+    // its shares; each pass or Cryptomatte draw weighs the samples as it did (the same program
+    // text and uniforms but for its outputs: the same weights, bit for bit) times the shares.
     // With image stores (`afterBand` given) a pass draw runs band by band, its sums written to
     // band-sized images (kPassBandRows) that afterBand(first row) reads back before the next.
     const int bandRows = passImages() ? std::min(height, kPassBandRows) : height;
@@ -899,6 +899,10 @@ struct WindowResolver::Impl {
       const gl::Program& p = gatherProgram(kind, variant, joined);
       target.bind();
       setUniforms(p, tiles);
+      if (variant != 0) {
+        shares.bind(sharesUnit());
+        p.set("uShares", sharesUnit());
+      }
       bindExtra(p);
       const char* pass = variant == 0 ? "window gather pass"
                          : joined     ? "window gather pass (pass groups and Cryptomatte)"
@@ -934,9 +938,6 @@ struct WindowResolver::Impl {
     auto bindCryptomatte = [&](const gl::Program& p, int set, int firstImage) {
       cryptomatteRings[std::size_t(set)].bind(cryptomatteUnit());
       p.set("uCrypto", cryptomatteUnit());
-      p.set("uHasStrataShares", cryptomatteFollowsStrata() ? 1 : 0);
-      if (cryptomatteFollowsStrata()) strataShares.bind(cryptomatteUnit() + 1);
-      p.set("uStrataShares", cryptomatteUnit() + 1);
       if (!passImages()) return;
       std::vector<int> images;
       for (int rank = 0; rank < kCryptomatteRanks; ++rank) {
@@ -966,7 +967,18 @@ struct WindowResolver::Impl {
     for (Image& ranks : lastSums.cryptomatte) {
       if (ranks.width != width || ranks.height != height) ranks = Image(width, height, 4);
     }
-    if (groups == 0) drawGather(0, false, gatherTarget, [](const gl::Program&) {});
+    drawGather(0, false, gatherTarget, [](const gl::Program&) {});
+    // With image stores the pass draws' target is the colour's, left as the beauty wrote it
+    // (the mask put back however the draws end: a resolver outlives a failed frame).
+    struct ColourWritesOff {
+      const gl::Functions& functions;
+      explicit ColourWritesOff(const gl::Functions& f) : functions(f) {
+        functions.ColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+      }
+      ~ColourWritesOff() { functions.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE); }
+    };
+    std::optional<ColourWritesOff> colourWritesOff;
+    if (passImages()) colourWritesOff.emplace(gl);
     for (int d = 0; d < groupDraws; ++d) {
       const int firstGroup = d * perDraw;
       const int drawGroups = std::min(groups - firstGroup, perDraw);
@@ -1013,15 +1025,6 @@ struct WindowResolver::Impl {
         }
         continue;
       }
-      // Into the pass draws' target, its colour left as they wrote it (the mask put back
-      // however the draws end: a resolver outlives a failed frame).
-      struct ColourWritesOff {
-        const gl::Functions& functions;
-        explicit ColourWritesOff(const gl::Functions& f) : functions(f) {
-          functions.ColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-        }
-        ~ColourWritesOff() { functions.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE); }
-      } colourWritesOff(gl);
       drawGather(kCryptomatteDraw, false, passTargets.back(), bind,
                  [&](int row) { readCryptomatteBand(set, row); });
     }
