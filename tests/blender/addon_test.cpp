@@ -25,6 +25,7 @@
 #include "io/frame_reader.h"
 #include "resolve/camera.h"
 #include "resolve/jitter.h"
+#include "blender_tmpdir.h"
 
 namespace taa {
 namespace {
@@ -48,6 +49,7 @@ ToolRun blender(const fs::path& folder, const std::string& step,
                 const std::vector<std::string>& args) {
   const fs::path scratch = folder / step;
   fs::create_directories(scratch);
+  test::keepBlendersTemporaryFilesInTheTestFolder();
   ToolRun run = runProgram("blender", args, scratch);
   run.out += run.err;  // Blender prints its messages and Python's on both
   return run;

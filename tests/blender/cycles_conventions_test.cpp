@@ -23,6 +23,7 @@
 #include "io/frame_reader.h"
 #include "resolve/camera.h"
 #include "resolve/jitter.h"
+#include "blender_tmpdir.h"
 
 namespace taa {
 namespace {
@@ -39,6 +40,7 @@ const std::string& renderedScene() {
         std::string(TAA_TEST_TMPDIR) + "/cycles_conventions_" + std::to_string(getpid());
     fs::remove_all(out);
     fs::create_directories(out);
+    test::keepBlendersTemporaryFilesInTheTestFolder();
     const std::string command =
         "blender -b --factory-startup -noaudio -P '" + std::string(TAA_BLENDER_SCRIPT) +
         "' -- --scene cycles_conventions --out '" + out + "' --size 64x48 --frames 1-3 "

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "../e2e/taatool_runner.h"
+#include "blender_tmpdir.h"
 
 namespace taa {
 namespace {
@@ -27,6 +28,7 @@ const fs::path& renderedStereo() {
     const fs::path out = fs::path(TAA_TEST_TMPDIR) / ("stereo_" + std::to_string(getpid()));
     fs::remove_all(out);
     fs::create_directories(out);
+    test::keepBlendersTemporaryFilesInTheTestFolder();
     const std::string command = "blender -b --factory-startup -noaudio -P '" +
                                 std::string(TAA_STEREO_SCENE_SCRIPT) + "' -- '" + out.string() +
                                 "' > '" + (out / "blender.log").string() + "' 2>&1";

@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include "../blender/blender_tmpdir.h"
 #include "yardstick_runner.h"
 
 namespace {
@@ -17,6 +18,7 @@ using namespace taa::yardstick::test;
 TEST(YardstickBlender, ReducedRealSceneEndToEnd) {
   const std::string work = std::string(TAA_TEST_TMPDIR) + "/real";
   std::filesystem::remove_all(work);
+  taa::test::keepBlendersTemporaryFilesInTheTestFolder();
   const std::string arguments =
       "--scenes cycles_ball --size 64x36 --frames 1-6 --warmup 2 --blender-samples 16 "
       "--ssaa 2,4 --configs classic,default --render-cache " + work + "/cache --work " + work +
