@@ -1006,6 +1006,9 @@ void main() {
   outStats[2] = vec4(gStatsWords[2]);
   outStats[3] = vec4(gStatsWords[3]);
 #else
+#if !SHARES
+  // The colour and diagnostics are the beauty's draw's: the pass and Cryptomatte draws that
+  // follow it write neither (their colour is masked or not attached).
   vec4 resolved = gSum / gWeight;
 #if STRATA
   resolved = uStrata ? stratifiedMean(gQuadrants, resolved) : resolved;
@@ -1032,6 +1035,11 @@ void main() {
 #else
   outColor = finiteOutput(taaFromWorking(working));
 #endif
+  // Rejected: hidden candidates, and the weight of sources left out for their colour.
+  float rejected = gHidden + gDisagreeing;
+  outDebug = vec4(gWeight, gCandidates > 0.0 ? min(rejected / gCandidates, 1.0) : 0.0,
+                  gCandidates, 0.0);
+#endif
 #if PASS_GROUPS > 0
   for (int g = 0; g < PASS_GROUPS; ++g) {
 #if PASS_IMAGES
@@ -1052,9 +1060,5 @@ void main() {
   cryptoOutput(outCrypto[0], outCrypto[1], outCrypto[2]);
 #endif
 #endif
-  // Rejected: hidden candidates, and the weight of sources left out for their colour.
-  float rejected = gHidden + gDisagreeing;
-  outDebug = vec4(gWeight, gCandidates > 0.0 ? min(rejected / gCandidates, 1.0) : 0.0,
-                  gCandidates, 0.0);
 #endif
 }
