@@ -1,5 +1,6 @@
 // readPartChannels: several AOVs' channels of one part decoded in one pass, in row bands, with
-// every codec's chunk height, tiles, a data window off the origin and channel types mixed.
+// every codec's chunk height, tiles, a data window off the origin and channel types mixed; on
+// one thread and on several.
 #include "io/part_channels.h"
 
 #include <Imath/half.h>
@@ -9,6 +10,7 @@
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
+#include <mutex>
 #include <vector>
 
 #include "test_files.h"
@@ -85,8 +87,10 @@ TEST(PartChannels, EveryRequestGetsItsChannelsWhateverTheCodecOrTiling) {
   const struct {
     const char* compression;
     int tile;
-  } kFiles[] = {{"none", 0}, {"zip", 0}, {"zips", 0}, {"piz", 0}, {"dwab", 0},
-                {"pxr24", 0}, {"zip", 32}, {"piz", 48}};
+    int threads;  // decodeThreads: 3 over the five bands of 32 rows (or more) left unevenly
+  } kFiles[] = {{"none", 0, 1}, {"zip", 0, 1}, {"zips", 0, 1}, {"piz", 0, 1}, {"dwab", 0, 1},
+                {"pxr24", 0, 1}, {"zip", 32, 1}, {"piz", 48, 1}, {"none", 0, 3}, {"zip", 0, 3},
+                {"zips", 0, 3}, {"piz", 0, 3}, {"zip", 32, 3}};
   for (const auto& file : kFiles) {
     const std::string path =
         folder + "/" + file.compression + "-" + std::to_string(file.tile) + ".exr";
@@ -108,9 +112,11 @@ TEST(PartChannels, EveryRequestGetsItsChannelsWhateverTheCodecOrTiling) {
         {"motion", {indexOf(spec, "E"), indexOf(spec, "D")}, {"E", "D"}, OIIO::TypeFloat,
          eAndD.data(), 2},
         {"ids", {indexOf(spec, "C")}, {"C"}, OIIO::TypeFloat, c.data(), 1}};
-    readPartChannels(*input, path, 5, 0, spec, requests);
+    readPartChannels(*input, path, 5, 0, spec, requests, file.threads);
 
-    const std::string where = std::string(file.compression) + " tile " + std::to_string(file.tile);
+    const std::string where = std::string(file.compression) + " tile " +
+                              std::to_string(file.tile) + " threads " +
+                              std::to_string(file.threads);
     // Every codec here is lossless on these values but DWAB, which is lossy on half and float
     // colour-like channels: compare it loosely.
     const bool lossy = std::string(file.compression) == "dwab";
@@ -135,21 +141,57 @@ TEST(PartChannels, ADamagedFileNamesEveryAovOfThePassAndItsChannels) {
   const std::string path = folder + "/cut.exr";
   writeMixed(path, "zip", 0);
   std::filesystem::resize_file(path, std::filesystem::file_size(path) * 2 / 3);
+  for (int threads : {1, 3}) {
+    OIIO::ImageSpec spec;
+    auto input = openInput(path, spec);
+    ASSERT_TRUE(input) << OIIO::geterror();
+    std::vector<float> a(std::size_t(kWidth) * kHeight), b(a.size());
+    const Error error = errorOf([&] {
+      readPartChannels(*input, path, 12, 0, spec,
+                       {{"color", {indexOf(spec, "A")}, {"A"}, OIIO::TypeFloat, a.data(), 1},
+                        {"depth", {indexOf(spec, "B")}, {"B"}, OIIO::TypeFloat, b.data(), 1}},
+                       threads);
+    });
+    EXPECT_TRUE(contains(error.what(),
+                         "cannot read the color and depth pixels (truncated or corrupt"))
+        << error.what() << " (threads " << threads << ")";
+    EXPECT_EQ(error.context().file, path);
+    EXPECT_EQ(error.context().frame, 12);
+    EXPECT_EQ(error.context().channel, "A, B");
+  }
+}
+
+// A band request (the passes' way) on several threads: every pixel handed over once, with its
+// values, whichever thread decoded its band.
+TEST(PartChannels, BandsDecodedOnSeveralThreadsReachTheBandRequestOnceEach) {
+  const std::string folder = scratchFolder();
+  const std::string path = folder + "/bands.exr";
+  writeMixed(path, "zip", 0);
   OIIO::ImageSpec spec;
   auto input = openInput(path, spec);
   ASSERT_TRUE(input) << OIIO::geterror();
-  std::vector<float> a(std::size_t(kWidth) * kHeight), b(a.size());
-  const Error error = errorOf([&] {
-    readPartChannels(*input, path, 12, 0, spec,
-                     {{"color", {indexOf(spec, "A")}, {"A"}, OIIO::TypeFloat, a.data(), 1},
-                      {"depth", {indexOf(spec, "B")}, {"B"}, OIIO::TypeFloat, b.data(), 1}});
-  });
-  EXPECT_TRUE(contains(error.what(),
-                       "cannot read the color and depth pixels (truncated or corrupt"))
-      << error.what();
-  EXPECT_EQ(error.context().file, path);
-  EXPECT_EQ(error.context().frame, 12);
-  EXPECT_EQ(error.context().channel, "A, B");
+  const std::size_t count = std::size_t(kWidth) * kHeight;
+  std::vector<float> values(count * 2, -1.0f);
+  std::vector<int> visits(count, 0);
+  std::mutex mutex;
+  ChannelRequest request{"passes", {indexOf(spec, "B"), indexOf(spec, "D")}, {"B", "D"},
+                         OIIO::TypeFloat, nullptr, 2, {}};
+  request.band = [&](std::size_t first, std::size_t n, const float* band) {
+    std::lock_guard<std::mutex> lock(mutex);
+    for (std::size_t i = 0; i < n; ++i) {
+      ++visits[first + i];
+      values[2 * (first + i)] = band[2 * i];
+      values[2 * (first + i) + 1] = band[2 * i + 1];
+    }
+  };
+  readPartChannels(*input, path, 3, 0, spec, {request}, 3);
+  int wrong = 0;
+  for (std::size_t p = 0; p < count; ++p) {
+    wrong += visits[p] != 1;
+    wrong += values[2 * p] != valueAt(int(p), 1);
+    wrong += values[2 * p + 1] != valueAt(int(p), 3);
+  }
+  EXPECT_EQ(wrong, 0);
 }
 
 }  // namespace

@@ -54,11 +54,13 @@ TEST(WriteBehind, ReportsInOrderWhateverOrderWritesFinishIn) {
 TEST(ReadAhead, ADepthSetLaterAppliesToTheReadsStartedAfterIt) {
   std::mutex mutex;
   std::vector<std::thread::id> readers(8);
+  std::vector<int> waited(8, -1);  // whether each read was told its caller waits for it
   std::atomic<int> started{0};
-  ReadAhead reads({0, 1, 2, 3, 4, 5, 6, 7}, 0, [&](int frame) {
+  ReadAhead reads({0, 1, 2, 3, 4, 5, 6, 7}, 0, [&](int frame, bool callerWaits) {
     ++started;
     std::lock_guard<std::mutex> lock(mutex);
     readers[std::size_t(frame)] = std::this_thread::get_id();
+    waited[std::size_t(frame)] = callerWaits;
     io::FrameData data;
     data.frame = frame;
     return data;
@@ -71,6 +73,10 @@ TEST(ReadAhead, ADepthSetLaterAppliesToTheReadsStartedAfterIt) {
   EXPECT_EQ(readers[1], std::this_thread::get_id());
   EXPECT_EQ(reads.next().frame, 2);
   EXPECT_NE(readers[2], std::this_thread::get_id());  // at depth 2: on a worker thread
+  // Only the reads the caller waits for may take every core (io/part_channels' threads).
+  EXPECT_EQ(waited[0], 1);
+  EXPECT_EQ(waited[1], 1);
+  EXPECT_EQ(waited[2], 0);
   // Frames 3 to 5 go ahead (the frame after the one taken, and two more), not frame 6.
   while (started < 6) std::this_thread::sleep_for(std::chrono::milliseconds(1));
   std::this_thread::sleep_for(std::chrono::milliseconds(20));

@@ -205,10 +205,11 @@ class PartReads {
     groups_.push_back({&file, part, {std::move(request)}});
   }
 
-  void readAll(int frame) {
+  void readAll(int frame, int decodeThreads) {
     for (const Group& group : groups_) {
       readPartChannels(*group.file->input, group.file->path, frame, group.part,
-                       group.file->parts[std::size_t(group.part)], group.requests);
+                       group.file->parts[std::size_t(group.part)], group.requests,
+                       decodeThreads);
     }
   }
 
@@ -470,7 +471,7 @@ PassHeader readPassHeader(const AovLayout& layout, int frame) {
 }
 
 FrameData readFrame(const AovLayout& layout, int frame, const CameraInputs& cameras,
-                    const PassBandReceiver& passBands) {
+                    const PassBandReceiver& passBands, int decodeThreads) {
   if (layout.color.pattern.empty()) {
     throw Error("no color file pattern given", {"", frame, ""});
   }
@@ -522,7 +523,7 @@ FrameData readFrame(const AovLayout& layout, int frame, const CameraInputs& came
     data.motionPath = file.path;
   }
 
-  reads.readAll(frame);
+  reads.readAll(frame, decodeThreads);
   finishColor(data, colorChannels);
   if (depthFile) {
     if (layout.depthConvention.kind == DepthKind::Radial) {

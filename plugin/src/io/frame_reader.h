@@ -91,12 +91,14 @@ struct CameraInputs {
 // (which stays empty; names and formats are set); `passBands` is called once with them and the
 // image size before any pixel is read, and what it returns gets each band of rows as it is
 // decoded (ChannelRequest::band), so the frame's passes are never held whole as float.
+// `decodeThreads`: io/part_channels' readPartChannels (above 1 only where the caller's other
+// cores are idle while it reads; `passBands`' sink is then called from several threads).
 using PassBandSink =
     std::function<void(std::size_t firstPixel, std::size_t count, const float* values)>;
 using PassBandReceiver =
     std::function<PassBandSink(const ExtraChannels& passes, int width, int height)>;
 FrameData readFrame(const AovLayout& layout, int frame, const CameraInputs& cameras = {},
-                    const PassBandReceiver& passBands = {});
+                    const PassBandReceiver& passBands = {}, int decodeThreads = 1);
 
 // The pass channels readFrame would read for `frame` (AovLayout::passes; none without it), names
 // and types, and the image's size, from the colour file's header alone: a job decides from

@@ -5,7 +5,10 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstring>
+#include <exception>
+#include <functional>
 #include <memory>
+#include <thread>
 
 #include "taa/error.h"
 #include "io/scanline_bands.h"
@@ -78,10 +81,60 @@ void copyPixels(const unsigned char* from, std::size_t fromStride, unsigned char
   }
 }
 
+// A decoding thread's buffers: the band as decoded and a band request's rows.
+struct BandScratch {
+  FrameVector<unsigned char> band;  // frame-sized buffers: kept for the next pass
+  std::vector<float> values;
+};
+
+// Where a pass's channels lie in a decoded pixel: the file's channels [begin, end), each at
+// its byte offset and in its type there.
+struct PassLayout {
+  int begin = 0, end = 0;
+  std::vector<std::size_t> offset;
+  std::vector<OIIO::TypeDesc> type;
+  std::size_t pixelBytes = 0;
+};
+
+PassLayout layoutOf(const Pass& pass, const OIIO::ImageSpec& spec) {
+  PassLayout layout;
+  layout.begin = spec.nchannels;
+  for (const ChannelRequest* request : pass.requests) {
+    for (int c : request->channels) {
+      layout.begin = std::min(layout.begin, c);
+      layout.end = std::max(layout.end, c + 1);
+    }
+  }
+  for (int c = layout.begin; c < layout.end; ++c) {
+    const OIIO::TypeDesc type =
+        pass.format == OIIO::TypeUnknown ? spec.channelformat(c) : pass.format;
+    layout.type.push_back(type);
+    layout.offset.push_back(layout.pixelBytes);
+    layout.pixelBytes += type.size();
+  }
+  return layout;
+}
+
+// How each request of the pass takes its channels from a decoded pixel.
+std::vector<std::vector<ChannelCopy>> copiesOf(const Pass& pass, const PassLayout& layout) {
+  std::vector<std::vector<ChannelCopy>> copies;
+  for (const ChannelRequest* request : pass.requests) {
+    const std::size_t size = request->type.size();
+    std::vector<ChannelCopy>& mine = copies.emplace_back(request->channels.size());
+    for (std::size_t k = 0; k < mine.size(); ++k) {
+      const std::size_t c = std::size_t(request->channels[k] - layout.begin);
+      mine[k] = {layout.offset[c], k * size, layout.type[c] == OIIO::TypeHalf,
+                 request->type == OIIO::TypeHalf};
+    }
+  }
+  return copies;
+}
+
 }  // namespace
 
 void readPartChannels(OIIO::ImageInput& input, const std::string& path, int frame, int part,
-                      const OIIO::ImageSpec& spec, const std::vector<ChannelRequest>& requests) {
+                      const OIIO::ImageSpec& spec, const std::vector<ChannelRequest>& requests,
+                      int decodeThreads) {
   // Requests whose channels are all half or float share one pass in the file's types; any
   // other is decoded on its own, converted to its type by OIIO.
   std::vector<Pass> passes;
@@ -107,43 +160,52 @@ void readPartChannels(OIIO::ImageInput& input, const std::string& path, int fram
   });
   std::unique_ptr<ScanlineChunkReader> chunks =
       anyNative ? ScanlineChunkReader::open(path, part, spec) : nullptr;
-  FrameVector<unsigned char> band;  // a frame-sized buffer: kept for the next frame
-  std::vector<float> bandValues;     // a band request's rows (ChannelRequest::band)
+  BandScratch callerScratch;  // the calling thread's: kept for the next pass
   for (const Pass& pass : passes) {
-    int begin = spec.nchannels, end = 0;
-    for (const ChannelRequest* request : pass.requests) {
-      for (int c : request->channels) {
-        begin = std::min(begin, c);
-        end = std::max(end, c + 1);
+    const PassLayout layout = layoutOf(pass, spec);
+    const std::vector<std::vector<ChannelCopy>> copies = copiesOf(pass, layout);
+    const int bands = (spec.height + bandRows - 1) / bandRows;
+    auto rowsOf = [&](int b) { return std::min(bandRows, spec.height - b * bandRows); };
+    // Each band's pixels to the requests (disjoint rows: bands may be copied on any thread).
+    auto copyOut = [&](int b, BandScratch& scratch) {
+      const int rows = rowsOf(b);
+      const std::size_t count = std::size_t(rows) * width;
+      const std::size_t firstPixel = std::size_t(b) * std::size_t(bandRows) * width;
+      for (std::size_t r = 0; r < pass.requests.size(); ++r) {
+        const ChannelRequest& request = *pass.requests[r];
+        const std::size_t size = request.type.size();
+        const std::size_t channels = std::size_t(request.outChannels);
+        // A band request gets its rows in a scratch buffer, then handed over.
+        if (request.band) scratch.values.resize(count * channels);
+        auto* out = request.band ? reinterpret_cast<unsigned char*>(scratch.values.data())
+                                 : static_cast<unsigned char*>(request.out) +
+                                       firstPixel * channels * size;
+        copyPixels(scratch.band.data(), layout.pixelBytes, out, channels * size, copies[r],
+                   count);
+        if (request.band) request.band(firstPixel, count, scratch.values.data());
       }
-    }
-    // Where each channel of the range lies within a decoded pixel, and its type there.
-    std::vector<std::size_t> offset(std::size_t(end - begin));
-    std::vector<OIIO::TypeDesc> type(std::size_t(end - begin));
-    std::size_t pixelBytes = 0;
-    for (int c = begin; c < end; ++c) {
-      type[std::size_t(c - begin)] =
-          pass.format == OIIO::TypeUnknown ? spec.channelformat(c) : pass.format;
-      offset[std::size_t(c - begin)] = pixelBytes;
-      pixelBytes += type[std::size_t(c - begin)].size();
-    }
-    band.resize(std::size_t(bandRows) * width * pixelBytes);
-
-    for (int y = spec.y; y < spec.y + spec.height; y += bandRows) {
-      const int rows = std::min(bandRows, spec.y + spec.height - y);
+    };
+    // A band from the chunks; false where that reader declines or fails.
+    auto fromChunks = [&](int b, BandScratch& scratch) {
       std::string chunkError;  // unused: OIIO reads the band again and says what is wrong
-      const bool decoded = chunks && pass.format == OIIO::TypeUnknown &&
-                           chunks->readRows(y, rows, begin, end, band.data(), chunkError);
+      scratch.band.resize(std::size_t(bandRows) * width * layout.pixelBytes);
+      return chunks && pass.format == OIIO::TypeUnknown &&
+             chunks->readRows(spec.y + b * bandRows, rowsOf(b), layout.begin, layout.end,
+                              scratch.band.data(), chunkError);
+    };
+    // A band through OIIO, whose errors name the file, frame and channels.
+    auto fromOiio = [&](int b, BandScratch& scratch) {
+      const int y = spec.y + b * bandRows, rows = rowsOf(b);
+      scratch.band.resize(std::size_t(bandRows) * width * layout.pixelBytes);
       // OIIO may report a failure only through its error state, so check both.
       // OIIO's OpenEXR reader reads tiled files by tiles only; a band is whole tile rows.
-      bool ok = decoded;
-      if (!decoded) {
-        ok = spec.tile_height > 0
-                 ? input.read_tiles(part, 0, spec.x, spec.x + spec.width, y, y + rows, spec.z,
-                                    spec.z + 1, begin, end, pass.format, band.data())
-                 : input.read_scanlines(part, 0, y, y + rows, spec.z, begin, end, pass.format,
-                                        band.data());
-      }
+      const bool ok =
+          spec.tile_height > 0
+              ? input.read_tiles(part, 0, spec.x, spec.x + spec.width, y, y + rows, spec.z,
+                                 spec.z + 1, layout.begin, layout.end, pass.format,
+                                 scratch.band.data())
+              : input.read_scanlines(part, 0, y, y + rows, spec.z, layout.begin, layout.end,
+                                     pass.format, scratch.band.data());
       if (!ok || input.has_error()) {
         std::string reason = input.geterror();
         if (reason.empty()) reason = "unknown error";
@@ -156,25 +218,43 @@ void readPartChannels(OIIO::ImageInput& input, const std::string& path, int fram
                         " pixels (truncated or corrupt file?): " + reason,
                     {path, frame, joined(names)});
       }
-      const std::size_t count = std::size_t(rows) * width;
-      const std::size_t firstPixel = std::size_t(y - spec.y) * width;
-      for (const ChannelRequest* request : pass.requests) {
-        const std::size_t size = request->type.size();
-        const std::size_t channels = std::size_t(request->outChannels);
-        // A band request gets its rows in a scratch buffer, then handed over.
-        if (request->band) bandValues.resize(count * channels);
-        auto* out = request->band ? reinterpret_cast<unsigned char*>(bandValues.data())
-                                  : static_cast<unsigned char*>(request->out) +
-                                        firstPixel * channels * size;
-        std::vector<ChannelCopy> copies(request->channels.size());
-        for (std::size_t k = 0; k < copies.size(); ++k) {
-          const std::size_t c = std::size_t(request->channels[k] - begin);
-          copies[k] = {offset[c], k * size, type[c] == OIIO::TypeHalf,
-                       request->type == OIIO::TypeHalf};
+    };
+    // With threads to spare (nothing else runs while this frame is read), the chunks' bands
+    // are decoded and copied on `decodeThreads` threads, band b on thread b % threads; a band
+    // the chunk reader cannot decode is read by OIIO afterwards, on this thread, in order.
+    const int threads = chunks && pass.format == OIIO::TypeUnknown
+                            ? std::clamp(decodeThreads, 1, std::max(bands, 1))
+                            : 1;
+    std::vector<char> decoded(std::size_t(bands), 0);
+    if (threads > 1) {
+      std::vector<std::exception_ptr> failures(static_cast<std::size_t>(threads));
+      auto work = [&](int t, BandScratch& scratch) {
+        try {
+          for (int b = t; b < bands; b += threads) {
+            if (!fromChunks(b, scratch)) continue;
+            copyOut(b, scratch);
+            decoded[std::size_t(b)] = 1;
+          }
+        } catch (...) {
+          failures[std::size_t(t)] = std::current_exception();
         }
-        copyPixels(band.data(), pixelBytes, out, channels * size, copies, count);
-        if (request->band) request->band(firstPixel, count, bandValues.data());
+      };
+      std::vector<BandScratch> helperScratch(std::size_t(threads - 1));
+      std::vector<std::thread> helpers;
+      for (int t = 1; t < threads; ++t) {
+        helpers.emplace_back(work, t, std::ref(helperScratch[std::size_t(t - 1)]));
       }
+      work(0, callerScratch);
+      for (std::thread& helper : helpers) helper.join();
+      for (const std::exception_ptr& failure : failures) {
+        if (failure) std::rethrow_exception(failure);
+      }
+    }
+    for (int b = 0; b < bands; ++b) {
+      if (decoded[std::size_t(b)]) continue;
+      // Where the threads ran, the chunk reader has failed this band already.
+      if (threads > 1 || !fromChunks(b, callerScratch)) fromOiio(b, callerScratch);
+      copyOut(b, callerScratch);
     }
   }
 }

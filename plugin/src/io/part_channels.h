@@ -32,7 +32,11 @@ struct ChannelRequest {
 // bands come from its chunks directly (io/scanline_chunks), any other's from OIIO. A request for
 // a channel stored in another type (uint) is read on its own, converted by OIIO as before. Throws taa::Error naming `path`,
 // `frame` and the channels when the file cannot be decoded (truncated, corrupt).
+// `decodeThreads` above 1 decodes the chunks' bands on that many threads (the caller's one of
+// them), for a caller that waits for the frame with cores idle; `band` callbacks then come
+// from any of them, in no order, each for rows of its own.
 void readPartChannels(OIIO::ImageInput& input, const std::string& path, int frame, int part,
-                      const OIIO::ImageSpec& spec, const std::vector<ChannelRequest>& requests);
+                      const OIIO::ImageSpec& spec, const std::vector<ChannelRequest>& requests,
+                      int decodeThreads = 1);
 
 }  // namespace taa::io

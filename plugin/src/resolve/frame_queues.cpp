@@ -30,7 +30,7 @@ void drain(std::deque<std::pair<std::future<void>, int>>& pending) {
 
 }  // namespace
 
-ReadAhead::ReadAhead(std::vector<int> frames, int depth, std::function<io::FrameData(int)> read)
+ReadAhead::ReadAhead(std::vector<int> frames, int depth, Read read)
     : frames_(std::move(frames)), depth_(std::max(0, depth)), read_(std::move(read)) {}
 
 ReadAhead::~ReadAhead() { drain(pending_); }
@@ -38,7 +38,9 @@ ReadAhead::~ReadAhead() { drain(pending_); }
 void ReadAhead::fill() {
   while (started_ < frames_.size() && started_ <= taken_ + std::size_t(depth_)) {
     const int frame = frames_[started_++];
-    pending_.push_back(std::async(policyFor(depth_), [this, frame] { return read_(frame); }));
+    const bool callerWaits = depth_ == 0;
+    pending_.push_back(std::async(policyFor(depth_),
+                                  [this, frame, callerWaits] { return read_(frame, callerWaits); }));
   }
 }
 

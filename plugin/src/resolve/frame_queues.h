@@ -16,7 +16,10 @@ namespace taa {
 class ReadAhead {
  public:
   // Reads `frames` in order with `read`, up to `depth` frames ahead of the one taken last.
-  ReadAhead(std::vector<int> frames, int depth, std::function<io::FrameData(int)> read);
+  // `read` is told whether the caller waits for it (depth 0: the read runs on the calling
+  // thread while nothing else does, so it may use every core).
+  using Read = std::function<io::FrameData(int frame, bool callerWaits)>;
+  ReadAhead(std::vector<int> frames, int depth, Read read);
   ~ReadAhead();
   ReadAhead(const ReadAhead&) = delete;
   ReadAhead& operator=(const ReadAhead&) = delete;
@@ -34,7 +37,7 @@ class ReadAhead {
   std::vector<int> frames_;
   std::size_t taken_ = 0, started_ = 0;
   int depth_;
-  std::function<io::FrameData(int)> read_;
+  Read read_;
   std::deque<std::future<io::FrameData>> pending_;
 };
 

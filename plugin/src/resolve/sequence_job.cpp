@@ -29,6 +29,7 @@
 #include "util/frame_buffer_pool.h"
 #include "util/frame_span.h"
 #include "util/interruption.h"
+#include "util/usable_cores.h"
 
 namespace taa {
 namespace {
@@ -296,6 +297,10 @@ void validateSequenceJob(const SequenceJob& job) {
 
 namespace {
 
+// Threads a read the resolve waits for decodes on, at most: a 1080p band is 32 rows, so more
+// threads would share too few bands (and a node's cores are the farm's).
+constexpr int kMaxDecodeThreads = 8;
+
 // What both strategies share while running a job: inputs, outputs, the writer.
 struct JobRun {
   const SequenceJob& job;
@@ -341,17 +346,19 @@ struct JobRun {
   }
 
   // Reads a frame, every view of it; a projection that carries the frame's jitter gets it
-  // taken out.
-  io::FrameData read(int frame) const {
-    io::FrameData data = readView(*layouts[0], frame);
+  // taken out. A read the resolve waits for (no frames read ahead: a window run with passes,
+  // or --threads 0) decodes on every core it may use; one beside the GL's work on one.
+  io::FrameData read(int frame, bool callerWaits) const {
+    const int decodeThreads = callerWaits ? std::min(usableCores(), kMaxDecodeThreads) : 1;
+    io::FrameData data = readView(*layouts[0], frame, decodeThreads);
     for (std::size_t v = 1; v < layouts.size(); ++v) {
-      data.otherViews.push_back(readView(*layouts[v], frame));
+      data.otherViews.push_back(readView(*layouts[v], frame, decodeThreads));
     }
     if (layouts.size() > 1) requireCamerasOfTheirOwn(data);
     return data;
   }
 
-  io::FrameData readView(const io::AovLayout& layout, int frame) const {
+  io::FrameData readView(const io::AovLayout& layout, int frame, int decodeThreads) const {
     // The window resolve packs the passes for its ring as they are decoded, band by band, on
     // the reader's thread: the frame's pass channels are never held whole as float (590 MB
     // for a 1080p Cycles render with every pass), and the frame waits for the ring holding
@@ -369,7 +376,7 @@ struct JobRun {
         };
       };
     }
-    io::FrameData data = io::readFrame(layout, frame, cameras, passBands);
+    io::FrameData data = io::readFrame(layout, frame, cameras, passBands, decodeThreads);
     if (!data.passes.names.empty() && passBands) {
       data.passGroups = std::move(packed.groups);
       data.passCryptomatte = std::move(packed.cryptomatte);
@@ -529,7 +536,8 @@ void runHistory(JobRun& run, gl::Context& context) {
   }
   Resolver& resolver = *resolvers.front();
   std::vector<FrameReport> reports(job.frames.size());
-  ReadAhead reads(job.frames, ioDepthOf(job, false), [&run](int frame) { return run.read(frame); });
+  ReadAhead reads(job.frames, ioDepthOf(job, false),
+                  [&run](int frame, bool callerWaits) { return run.read(frame, callerWaits); });
   WriteBehind writes(ioDepthOf(job, false), [&](int index) {
     if (run.callbacks.frameDone) run.callbacks.frameDone(reports[std::size_t(index)]);
   });
@@ -666,7 +674,8 @@ class WindowRun {
         reports_(outputs_.size()),
         // Whether the frames carry passes is known once the first is read: until then, one
         // read, unless --threads said how many.
-        reads_(plan_.reads, firstIoDepth(job_), [&run](int frame) { return run.read(frame); }),
+        reads_(plan_.reads, firstIoDepth(job_),
+               [&run](int frame, bool callerWaits) { return run.read(frame, callerWaits); }),
         writes_(firstIoDepth(job_), [this](int index) {
           if (run_.callbacks.frameDone) run_.callbacks.frameDone(reports_[std::size_t(index)]);
         }),
