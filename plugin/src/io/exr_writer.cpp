@@ -1,10 +1,12 @@
 #include "io/exr_writer.h"
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
+#include <future>
 #include <system_error>
 
 #include <Imath/half.h>
@@ -65,7 +67,9 @@ inline unsigned char* storeAs(OIIO::TypeDesc type, float value, unsigned char* t
 
 // RGBA followed by the extra channels, each in the file's type of that channel, a band of rows
 // at a time (write_scanlines with TypeUnknown takes every channel in its own type): no copy of
-// the whole frame is made, and OIIO converts nothing.
+// the whole frame is made, and OIIO converts nothing. The next band is packed on another thread
+// while OpenEXR codes this one (its coding waits for whole bands; packing a render's every pass
+// from the sums is a third of the writing's time, measured in docs/PERFORMANCE.md).
 bool writeBands(OIIO::ImageOutput& output, const OIIO::ImageSpec& spec, const ImageView& rgba,
                 const ExtraChannels& extra) {
   const std::size_t width = std::size_t(rgba.width);
@@ -81,15 +85,14 @@ bool writeBands(OIIO::ImageOutput& output, const OIIO::ImageSpec& spec, const Im
   // A band of rows at a time (io/scanline_bands): 32 rows of a render's every pass at 1920
   // pixels in their own types are 12 MB, where a frame interleaved as float would be 590.
   const int bandRows = rowsPerBand(spec);
-  std::vector<unsigned char> band(std::size_t(bandRows) * width * pixelBytes);
-  for (int y = 0; y < rgba.height; y += bandRows) {
+  auto pack = [&](int y, unsigned char* band) {
     const int rows = std::min(bandRows, rgba.height - y);
-    unsigned char* to = band.data();
+    unsigned char* to = band;
     if (extra.packed.rows) {
       // Packed on demand (ExtraChannels::Packed::rows): straight into the band, after each
       // pixel's colour.
       extra.packed.rows(std::size_t(y) * width, std::size_t(rows) * width,
-                        band.data() + (pixelBytes - packedBytes), pixelBytes);
+                        band + (pixelBytes - packedBytes), pixelBytes);
     }
     for (std::size_t i = std::size_t(y) * width, end = i + std::size_t(rows) * width; i < end;
          ++i) {
@@ -106,10 +109,21 @@ bool writeBands(OIIO::ImageOutput& output, const OIIO::ImageSpec& spec, const Im
       const float* more = &extra.image.pixels[i * extraCount];
       for (std::size_t c = 0; c < extraCount; ++c) to = storeAs(types[4 + c], more[c], to);
     }
-    if (!output.write_scanlines(spec.y + y, spec.y + y + rows, 0, OIIO::TypeUnknown,
-                                band.data())) {
-      return false;
+  };
+  std::array<std::vector<unsigned char>, 2> bands;
+  for (auto& band : bands) band.resize(std::size_t(bandRows) * width * pixelBytes);
+  pack(0, bands[0].data());
+  for (int y = 0, k = 0; y < rgba.height; y += bandRows, ++k) {
+    const int rows = std::min(bandRows, rgba.height - y);
+    // The next band packed meanwhile (waited for before this function returns or throws).
+    std::future<void> next;
+    if (y + bandRows < rgba.height) {
+      next = std::async(std::launch::async, pack, y + bandRows, bands[(k + 1) % 2].data());
     }
+    const bool written = output.write_scanlines(spec.y + y, spec.y + y + rows, 0,
+                                                OIIO::TypeUnknown, bands[k % 2].data());
+    if (next.valid()) next.get();
+    if (!written) return false;
   }
   return true;
 }

@@ -46,7 +46,8 @@ struct ExtraChannels {
     FrameVector<unsigned char> bytes;
     // Or, instead of `bytes`: packs pixels [first, first + count) (rows top first), pixel
     // first + n at to + n * stride, when the writer reaches them, a band at a time, so the
-    // packed frame is never held whole.
+    // packed frame is never held whole. Called in order, one call at a time, on a thread of
+    // the writer's (the next band is packed while the last one is coded).
     std::function<void(std::size_t first, std::size_t count, unsigned char* to,
                        std::size_t stride)>
         rows;
