@@ -240,12 +240,19 @@ void readPartChannels(OIIO::ImageInput& input, const std::string& path, int fram
         }
       };
       std::vector<BandScratch> helperScratch(std::size_t(threads - 1));
-      std::vector<std::thread> helpers;
+      // Joined however this scope ends (a thread that cannot be started throws).
+      struct Helpers {
+        std::vector<std::thread> threads;
+        ~Helpers() {
+          for (std::thread& helper : threads) helper.join();
+        }
+      } helpers;
       for (int t = 1; t < threads; ++t) {
-        helpers.emplace_back(work, t, std::ref(helperScratch[std::size_t(t - 1)]));
+        helpers.threads.emplace_back(work, t, std::ref(helperScratch[std::size_t(t - 1)]));
       }
       work(0, callerScratch);
-      for (std::thread& helper : helpers) helper.join();
+      for (std::thread& helper : helpers.threads) helper.join();
+      helpers.threads.clear();
       for (const std::exception_ptr& failure : failures) {
         if (failure) std::rethrow_exception(failure);
       }
