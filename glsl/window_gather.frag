@@ -239,7 +239,17 @@ layout(location = 2) out vec4 outCrypto[3];
 #define ADD_CRYPTO_TWICE(texel, layer, weight, sourceWeight)
 #endif
 #if PASS_GROUPS > 0
-uniform sampler2DArray uPasses[PASS_GROUPS];
+// The groups' rings hold several groups of one type side by side (resolve/pass_packs): group
+// g's value for pixel x at texel x * kPassWidth[g] + kPassIndex[g] of the draw's pack
+// kPassPack[g]. The C++ side writes the tables (PASS_PACK_OF, ...) for each draw's groups.
+uniform sampler2DArray uPassPacks[PASS_PACKS];
+const int kPassPack[PASS_GROUPS] = PASS_PACK_OF;
+const int kPassIndex[PASS_GROUPS] = PASS_INDEX_OF;
+const int kPassWidth[PASS_GROUPS] = PASS_WIDTH_OF;
+vec4 passValue(int g, ivec2 n, int layer) {
+  return texelFetch(uPassPacks[kPassPack[g]],
+                    ivec3(n.x * kPassWidth[g] + kPassIndex[g], n.y, layer), 0);
+}
 #if PASS_IMAGES
 layout(rgba32f) uniform writeonly image2D uPassOutputs[PASS_GROUPS];
 #else
@@ -249,15 +259,15 @@ vec4 gPassSum[PASS_GROUPS];
 vec4 gSourcePassSum[PASS_GROUPS];
 #define ADD_PASSES(sums, n, layer, weight)                                   \
   for (int g = 0; g < PASS_GROUPS; ++g) {                                    \
-    sums[g] += (weight) * texelFetch(uPasses[g], ivec3((n), (layer)), 0);    \
+    sums[g] += (weight) * passValue(g, (n), (layer));                        \
   }
 // One sample into two sums: each group's texel fetched once (the fetches are most of a pass
 // draw's cost on llvmpipe).
 #define ADD_PASSES_TWICE(sums, weight, otherSums, otherWeight, n, layer)    \
   for (int g = 0; g < PASS_GROUPS; ++g) {                                    \
-    vec4 passValue = texelFetch(uPasses[g], ivec3((n), (layer)), 0);        \
-    sums[g] += (weight) * passValue;                                         \
-    otherSums[g] += (otherWeight) * passValue;                               \
+    vec4 value = passValue(g, (n), (layer));                                 \
+    sums[g] += (weight) * value;                                             \
+    otherSums[g] += (otherWeight) * value;                                   \
   }
 #else
 #define ADD_PASSES(sums, n, layer, weight)

@@ -243,14 +243,24 @@ TextureArray::TextureArray(const Functions& gl, int width, int height, int layer
 }
 
 void TextureArray::upload(int layer, const void* pixels, int components, GLenum type) {
+  uploadRows(layer, 0, height_, pixels, components, type);
+}
+
+void TextureArray::uploadRows(int layer, int firstRow, int rows, const void* pixels,
+                              int components, GLenum type) {
   if (!handle_) throw Error("texture array upload: the texture was never created");
   if (!pixels) throw Error("texture array upload: no pixel data");
   if (layer < 0 || layer >= layers_) throw Error("texture array upload: no layer " + std::to_string(layer));
+  if (firstRow < 0 || rows < 0 || firstRow + rows > height_) {
+    throw Error("texture array upload: rows " + std::to_string(firstRow) + ".." +
+                std::to_string(firstRow + rows - 1) + " are not in its " +
+                std::to_string(height_));
+  }
   const Functions& gl = handle_.gl();
   gl.BindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
   gl.PixelStorei(GL_UNPACK_ALIGNMENT, 1);
   gl.BindTexture(GL_TEXTURE_2D_ARRAY, handle_.id());
-  gl.TexSubImage3D(GL_TEXTURE_2D_ARRAY, 0, 0, 0, layer, width_, height_, 1,
+  gl.TexSubImage3D(GL_TEXTURE_2D_ARRAY, 0, 0, firstRow, layer, width_, rows, 1,
                    formatOfComponents(components), type, pixels);
   checkError(gl, "uploading a texture array layer");
 }

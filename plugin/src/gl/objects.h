@@ -103,6 +103,9 @@ class TextureArray {
 
   // Uploads one layer: width*height pixels of `components` samples of `type`, tightly packed.
   void upload(int layer, const void* pixels, int components, GLenum type);
+  // Uploads rows firstRow..firstRow+rows-1 of one layer, tightly packed as upload's.
+  void uploadRows(int layer, int firstRow, int rows, const void* pixels, int components,
+                  GLenum type);
   void bind(int unit) const;
 
   GLuint id() const { return handle_.id(); }

@@ -16,6 +16,7 @@
 #include "color/ocio_bracket.h"
 #include "color/ocio_gpu_resources.h"
 #include "gl/objects.h"
+#include "resolve/pass_packs.h"
 #include "resolve/reconstruction_filter.h"
 #include "resolve/resolve_input.h"
 #include "resolve/window_budget.h"
@@ -125,7 +126,7 @@ struct WindowResolver::Impl {
   static constexpr int kCryptomatteDraw = -1, kTileStatsDraw = -2;
   std::vector<std::string> gatherPrefix[kGatherVariants];
   color::OcioBracket::Range gatherWorkingRange{};  // glsl/finite_range.glsl's limits
-  std::map<std::tuple<int, int, bool, bool>, gl::Program> gatherPrograms;
+  std::map<std::tuple<int, int, bool, bool, std::string>, gl::Program> gatherPrograms;
   gl::AnySamplesQuery movingQuery;
   // The tile test: its targets (the gather's TILE_STATS draw writes them), the tiles' reach.
   gl::Texture stats[4], tileReach;
@@ -163,10 +164,13 @@ struct WindowResolver::Impl {
   // face (taatool, taa-farm, the C ABI, Python, OpenFX) drives it. Declared before the buffers
   // it covers, so that it outlives them.
   std::optional<FrameBuffersNotKept> buffersNotKept;
-  // Passes (setPassGroups): one ring per group of four values, a layer per frame that stays
-  // put (the colour ring's layers swap as frames are classified); the sums of the last frame.
+  // Passes (setPassGroups): the groups of four values in rings of several groups of one type
+  // side by side (resolve/pass_packs), a layer per frame that stays put (the colour ring's
+  // layers swap as frames are classified); the sums of the last frame.
   std::vector<bool> passHalf;
-  std::vector<gl::TextureArray> passRings;
+  PassPackLayout passLayout;
+  std::vector<gl::TextureArray> passPackRings;  // per pack of passLayout
+  std::vector<unsigned char> passUploadBand;    // a band of a pack's rows, for its upload
   std::vector<int> freePassLayers;
   // The sums of one draw (its groups', and a Cryptomatte set's three rank layers from
   // cryptomatteOutput()), read back before the next draw writes them: with image stores as
@@ -260,14 +264,19 @@ struct WindowResolver::Impl {
     return options.window.nearRadius > 0 && options.window.nearRadius < options.window.radius;
   }
 
-  // A variant's gather: `draw` 0 the beauty alone, n > 0 with n pass groups (and, with
-  // `joinedCryptomatte`, a Cryptomatte set: image stores only), kCryptomatteDraw a Cryptomatte
-  // set, kTileStatsDraw the tile test's statistics. Built when first needed.
-  const gl::Program& gatherProgram(int variant, int draw, bool joinedCryptomatte = false) {
-    const auto key = std::make_tuple(variant, draw, joinedCryptomatte, passImages());
+  // A variant's gather: `draw` 0 the beauty alone, n > 0 with n pass groups laid out in their
+  // packs as `packDefines` say (passPackDefines; and, with `joinedCryptomatte`, a Cryptomatte
+  // set: image stores only), kCryptomatteDraw a Cryptomatte set, kTileStatsDraw the tile
+  // test's statistics. Built when first needed.
+  const gl::Program& gatherProgram(int variant, int draw, bool joinedCryptomatte = false,
+                                   const std::vector<std::string>& packDefines = {}) {
+    std::string layout;
+    for (const std::string& line : packDefines) layout += line + "\n";
+    const auto key = std::make_tuple(variant, draw, joinedCryptomatte, passImages(), layout);
     auto found = gatherPrograms.find(key);
     if (found != gatherPrograms.end()) return found->second;
     std::vector<std::string> prefix = gatherPrefix[variant];
+    prefix.insert(prefix.begin(), packDefines.begin(), packDefines.end());
     if (draw != 0) {
       prefix.insert(prefix.begin(), draw == kTileStatsDraw     ? std::string("#define TILE_STATS 1")
                                     : draw == kCryptomatteDraw ? std::string("#define CRYPTOMATTE 1")
@@ -393,8 +402,45 @@ struct WindowResolver::Impl {
     }
   }
 
+  // The pass groups' packs (resolve/pass_packs): as many groups a ring as the driver's widest
+  // and largest texture array of capacity() layers holds.
+  void allocatePassPacks() {
+    passLayout = packPassGroups(passHalf, [&](int groups, bool half) {
+      const GLenum format = half ? GL_RGBA16F : GL_RGBA32F;
+      return gl::largestTextureArrayLayers(gl, groups * width, height, capacity(), format) >=
+             capacity();
+    });
+    for (const PassPackLayout::Pack& pack : passLayout.packs) {
+      passPackRings.emplace_back(gl, int(pack.groups.size()) * width, height, capacity(),
+                                 pack.half ? GL_RGBA16F : GL_RGBA32F);
+    }
+  }
+
+  // A frame's pass groups into their packs' layer `layer`, a band of rows at a time (a pack's
+  // whole layer interleaved would be 130 MB more at 1080p on a run whose bar is 4 GiB).
+  void uploadPassGroups(const std::vector<ImageView>& groups, int layer) {
+    constexpr std::size_t kBandBytes = std::size_t(8) << 20;
+    for (std::size_t p = 0; p < passLayout.packs.size(); ++p) {
+      const PassPackLayout::Pack& pack = passLayout.packs[p];
+      const int n = int(pack.groups.size());
+      const std::size_t rowBytes = std::size_t(width) * std::size_t(n) * (pack.half ? 8 : 16);
+      const int bandRows = std::max(1, int(kBandBytes / rowBytes));
+      passUploadBand.resize(std::size_t(std::min(bandRows, height)) * rowBytes);
+      for (int row = 0; row < height; row += bandRows) {
+        const int rows = std::min(bandRows, height - row);
+        for (int i = 0; i < n; ++i) {
+          interleaveGroupRows(groups[std::size_t(pack.groups[std::size_t(i)])], row, rows, i, n,
+                              pack.half, passUploadBand.data());
+        }
+        passPackRings[p].uploadRows(layer, row, rows, passUploadBand.data(), 4,
+                                    pack.half ? GL_HALF_FLOAT : GL_FLOAT);
+      }
+    }
+  }
+
   void allocatePasses() {
-    passRings.clear();
+    passLayout = PassPackLayout();
+    passPackRings.clear();
     passOutputs.clear();
     passTargets.clear();
     freePassLayers.clear();
@@ -405,9 +451,7 @@ struct WindowResolver::Impl {
     allocateRegionStats();
     if (!hasPasses() || width == 0) return;
     shares = gl::Texture(gl, width, height, GL_RGBA32F);
-    for (bool half : passHalf) {
-      passRings.emplace_back(gl, width, height, capacity(), half ? GL_RGBA16F : GL_RGBA32F);
-    }
+    allocatePassPacks();
     for (int s = 0; s < cryptomatteSets; ++s) {
       cryptomatteRings.emplace_back(gl, width, height, capacity(), GL_RGBA32F);
     }
@@ -636,11 +680,7 @@ struct WindowResolver::Impl {
     if (hasPasses()) {
       slot.passLayer = freePassLayers.back();
       freePassLayers.pop_back();
-      for (std::size_t g = 0; g < passRings.size(); ++g) {
-        const ImageView& group = input.passGroups[g];
-        passRings[g].upload(slot.passLayer, group.data, 4,
-                            group.type == SampleType::Half ? GL_HALF_FLOAT : GL_FLOAT);
-      }
+      uploadPassGroups(input.passGroups, slot.passLayer);
       for (std::size_t s = 0; s < cryptomatteRings.size(); ++s) {
         cryptomatteRings[s].upload(slot.passLayer, input.cryptomatte[s].data, 4, GL_FLOAT);
       }
@@ -893,10 +933,11 @@ struct WindowResolver::Impl {
     // With image stores (`afterBand` given) a pass draw runs band by band, its sums written to
     // band-sized images (kPassBandRows) that afterBand(first row) reads back before the next.
     const int bandRows = passImages() ? std::min(height, kPassBandRows) : height;
-    auto drawGather = [&](int variant, bool joined, const gl::Framebuffer& target,
+    auto drawGather = [&](int variant, bool joined, const std::vector<std::string>& packDefines,
+                          const gl::Framebuffer& target,
                           const std::function<void(const gl::Program&)>& bindExtra,
                           const std::function<void(int)>& afterBand = {}) {
-      const gl::Program& p = gatherProgram(kind, variant, joined);
+      const gl::Program& p = gatherProgram(kind, variant, joined, packDefines);
       target.bind();
       setUniforms(p, tiles);
       if (variant != 0) {
@@ -967,7 +1008,7 @@ struct WindowResolver::Impl {
     for (Image& ranks : lastSums.cryptomatte) {
       if (ranks.width != width || ranks.height != height) ranks = Image(width, height, 4);
     }
-    drawGather(0, false, gatherTarget, [](const gl::Program&) {});
+    drawGather(0, false, {}, gatherTarget, [](const gl::Program&) {});
     // With image stores the pass draws' target is the colour's, left as the beauty wrote it
     // (the mask put back however the draws end: a resolver outlives a failed frame).
     struct ColourWritesOff {
@@ -984,28 +1025,32 @@ struct WindowResolver::Impl {
       const int drawGroups = std::min(groups - firstGroup, perDraw);
       const bool joined = joinedSets > 0 && d == groupDraws - 1;
       const gl::Framebuffer& target = passTargets[std::size_t(d)];
+      std::vector<int> packs;
+      const std::vector<std::string> packDefines =
+          passPackDefines(passLayout, firstGroup, drawGroups, &packs);
       const auto bind = [&](const gl::Program& p) {
         std::vector<int> units, images;
-        for (int g = 0; g < drawGroups; ++g) {
-          units.push_back(firstPassUnit() + g);
-          passRings[std::size_t(firstGroup + g)].bind(units.back());
-          if (!passImages()) continue;
+        for (std::size_t k = 0; k < packs.size(); ++k) {
+          units.push_back(firstPassUnit() + int(k));
+          passPackRings[std::size_t(packs[k])].bind(units.back());
+        }
+        p.setIntArray("uPassPacks", units.data(), int(units.size()));
+        for (int g = 0; g < drawGroups && passImages(); ++g) {
           images.push_back(g);
           passOutputs[std::size_t(g)].bindImage(g);
         }
-        p.setIntArray("uPasses", units.data(), drawGroups);
         if (passImages()) p.setIntArray("uPassOutputs", images.data(), drawGroups);
         if (joined) bindCryptomatte(p, 0, drawGroups);
       };
       if (!passImages()) {
-        drawGather(drawGroups, false, target, bind);
+        drawGather(drawGroups, false, packDefines, target, bind);
         for (int g = 0; g < drawGroups; ++g) {
           TypedImage& sums = lastSums.groups[std::size_t(firstGroup + g)];
           target.readRGBA(sums.data(), glType(sums.type()), 2 + g);
         }
         continue;
       }
-      drawGather(drawGroups, joined, target, bind, [&](int row) {
+      drawGather(drawGroups, joined, packDefines, target, bind, [&](int row) {
         for (int g = 0; g < drawGroups; ++g) {
           TypedImage& sums = lastSums.groups[std::size_t(firstGroup + g)];
           readBand(passOutputs[std::size_t(g)], sums.data(), glType(sums.type()),
@@ -1018,14 +1063,14 @@ struct WindowResolver::Impl {
       const auto bind = [&](const gl::Program& p) { bindCryptomatte(p, set, 0); };
       if (!passImages()) {
         const gl::Framebuffer& target = cryptomatteTargets[std::size_t(set)];
-        drawGather(kCryptomatteDraw, false, target, bind);
+        drawGather(kCryptomatteDraw, false, {}, target, bind);
         for (int rank = 0; rank < kCryptomatteRanks; ++rank) {
           target.readRGBA(lastSums.cryptomatte[std::size_t(3 * set + rank)].pixels.data(),
                           GL_FLOAT, 2 + rank);
         }
         continue;
       }
-      drawGather(kCryptomatteDraw, false, passTargets.back(), bind,
+      drawGather(kCryptomatteDraw, false, {}, passTargets.back(), bind,
                  [&](int row) { readCryptomatteBand(set, row); });
     }
 
