@@ -166,6 +166,10 @@ void readPartChannels(OIIO::ImageInput& input, const std::string& path, int fram
     const std::vector<std::vector<ChannelCopy>> copies = copiesOf(pass, layout);
     const int bands = (spec.height + bandRows - 1) / bandRows;
     auto rowsOf = [&](int b) { return std::min(bandRows, spec.height - b * bandRows); };
+    // A thread's scratch made to hold a band of this pass, once a pass.
+    auto sizeForBands = [&](BandScratch& scratch) {
+      scratch.band.resize(std::size_t(bandRows) * width * layout.pixelBytes);
+    };
     // Each band's pixels to the requests (disjoint rows: bands may be copied on any thread).
     auto copyOut = [&](int b, BandScratch& scratch) {
       const int rows = rowsOf(b);
@@ -186,9 +190,9 @@ void readPartChannels(OIIO::ImageInput& input, const std::string& path, int fram
       }
     };
     // A band from the chunks; false where that reader declines or fails.
+    // (Either reads into scratch.band, sized for a band of this pass: sizeForBands.)
     auto fromChunks = [&](int b, BandScratch& scratch) {
       std::string chunkError;  // unused: OIIO reads the band again and says what is wrong
-      scratch.band.resize(std::size_t(bandRows) * width * layout.pixelBytes);
       return chunks && pass.format == OIIO::TypeUnknown &&
              chunks->readRows(spec.y + b * bandRows, rowsOf(b), layout.begin, layout.end,
                               scratch.band.data(), chunkError);
@@ -196,7 +200,6 @@ void readPartChannels(OIIO::ImageInput& input, const std::string& path, int fram
     // A band through OIIO, whose errors name the file, frame and channels.
     auto fromOiio = [&](int b, BandScratch& scratch) {
       const int y = spec.y + b * bandRows, rows = rowsOf(b);
-      scratch.band.resize(std::size_t(bandRows) * width * layout.pixelBytes);
       // OIIO may report a failure only through its error state, so check both.
       // OIIO's OpenEXR reader reads tiled files by tiles only; a band is whole tile rows.
       const bool ok =
@@ -230,6 +233,7 @@ void readPartChannels(OIIO::ImageInput& input, const std::string& path, int fram
       std::vector<std::exception_ptr> failures(static_cast<std::size_t>(threads));
       auto work = [&](int t, BandScratch& scratch) {
         try {
+          sizeForBands(scratch);
           for (int b = t; b < bands; b += threads) {
             if (!fromChunks(b, scratch)) continue;
             copyOut(b, scratch);
@@ -240,23 +244,24 @@ void readPartChannels(OIIO::ImageInput& input, const std::string& path, int fram
         }
       };
       std::vector<BandScratch> helperScratch(std::size_t(threads - 1));
-      // Joined however this scope ends (a thread that cannot be started throws).
-      struct Helpers {
-        std::vector<std::thread> threads;
-        ~Helpers() {
-          for (std::thread& helper : threads) helper.join();
+      {
+        // Joined as this block ends, however it ends (a thread that cannot be started throws).
+        struct Helpers {
+          std::vector<std::thread> threads;
+          ~Helpers() {
+            for (std::thread& helper : threads) helper.join();
+          }
+        } helpers;
+        for (int t = 1; t < threads; ++t) {
+          helpers.threads.emplace_back(work, t, std::ref(helperScratch[std::size_t(t - 1)]));
         }
-      } helpers;
-      for (int t = 1; t < threads; ++t) {
-        helpers.threads.emplace_back(work, t, std::ref(helperScratch[std::size_t(t - 1)]));
+        work(0, callerScratch);
       }
-      work(0, callerScratch);
-      for (std::thread& helper : helpers.threads) helper.join();
-      helpers.threads.clear();
       for (const std::exception_ptr& failure : failures) {
         if (failure) std::rethrow_exception(failure);
       }
     }
+    sizeForBands(callerScratch);
     for (int b = 0; b < bands; ++b) {
       if (decoded[std::size_t(b)]) continue;
       // Where the threads ran, the chunk reader has failed this band already.
