@@ -333,7 +333,10 @@ TEST_F(PassesTest, CryptomatteAloneKeepsTheStratifiedBeautyAndFollowsIt) {
 // every group and the first Cryptomatte set, in bands of 256 rows) and as draw buffers
 // otherwise (six groups a draw, a draw a Cryptomatte set; TAA_GL_IMAGE_STORES=0 chooses them):
 // the same files bit for bit. Eleven groups and two Cryptomatte sets, so that the draw buffers
-// take two group draws and two Cryptomatte draws; 300 rows, a whole band and part of one.
+// take two group draws and two Cryptomatte draws; 300 rows, a whole band and part of one. And
+// the groups' rings (resolve/pass_packs) change no bit: side by side in rings of three
+// (TAA_PASS_PACK_GROUPS=3: several rings of each type, some read by both draws of the draw
+// buffers), as the driver takes them, or a ring a group.
 TEST_F(PassesTest, ImageStoresAndDrawBuffersWriteThePassesAlike) {
   constexpr float kIdMaterial = 3.25e-5f;
   constexpr int kTallFrames = 3;
@@ -376,11 +379,18 @@ TEST_F(PassesTest, ImageStoresAndDrawBuffersWriteThePassesAlike) {
   setenv("TAA_GL_PROFILE", "1", 1);
   const ToolRun images = run({"-q"}, "images");
   setenv("TAA_GL_IMAGE_STORES", "0", 1);
+  setenv("TAA_PASS_PACK_GROUPS", "3", 1);
   const ToolRun buffers = run({"-q"}, "buffers");
   unsetenv("TAA_GL_IMAGE_STORES");
   unsetenv("TAA_GL_PROFILE");
+  const ToolRun packsOfThree = run({"-q"}, "packs-of-three");
+  setenv("TAA_PASS_PACK_GROUPS", "1", 1);
+  const ToolRun ringEach = run({"-q"}, "ring-each");
+  unsetenv("TAA_PASS_PACK_GROUPS");
   ASSERT_EQ(images.exitCode, 0) << images.err;
   ASSERT_EQ(buffers.exitCode, 0) << buffers.err;
+  ASSERT_EQ(packsOfThree.exitCode, 0) << packsOfThree.err;
+  ASSERT_EQ(ringEach.exitCode, 0) << ringEach.err;
   const auto draws = [](const std::string& err, const std::string& pass) {
     const std::size_t at = err.find("\n" + pass + " ");
     return at == std::string::npos ? -1 : std::atoi(err.c_str() + at + pass.size() + 2);
@@ -397,14 +407,16 @@ TEST_F(PassesTest, ImageStoresAndDrawBuffersWriteThePassesAlike) {
   EXPECT_EQ(draws(buffers.err, cryptomatte), 2 * kTallFrames) << buffers.err;
   for (int f = 1; f <= kTallFrames; ++f) {
     const Exr a = readExr(dir_ / "images" / frameName("r", f));
-    const Exr b = readExr(dir_ / "buffers" / frameName("r", f));
-    ASSERT_EQ(a.spec.channelnames, b.spec.channelnames);
-    ASSERT_EQ(a.pixels.size(), b.pixels.size());
-    std::size_t differing = 0;
-    for (std::size_t i = 0; i < a.pixels.size(); ++i) {
-      differing += std::memcmp(&a.pixels[i], &b.pixels[i], sizeof(float)) != 0;
+    for (const char* other : {"buffers", "packs-of-three", "ring-each"}) {
+      const Exr b = readExr(dir_ / other / frameName("r", f));
+      ASSERT_EQ(a.spec.channelnames, b.spec.channelnames);
+      ASSERT_EQ(a.pixels.size(), b.pixels.size());
+      std::size_t differing = 0;
+      for (std::size_t i = 0; i < a.pixels.size(); ++i) {
+        differing += std::memcmp(&a.pixels[i], &b.pixels[i], sizeof(float)) != 0;
+      }
+      EXPECT_EQ(differing, 0u) << other << ", frame " << f;
     }
-    EXPECT_EQ(differing, 0u) << "frame " << f;
   }
 }
 

@@ -403,12 +403,17 @@ struct WindowResolver::Impl {
   }
 
   // The pass groups' packs (resolve/pass_packs): as many groups a ring as the driver's widest
-  // and largest texture array of capacity() layers holds.
+  // and largest texture array of capacity() layers holds. TAA_PASS_PACK_GROUPS=n in the
+  // environment holds a ring to n groups (1: a ring a group, the layout before the packs: the
+  // tests check that the packing changes no bit).
   void allocatePassPacks() {
+    const char* cap = std::getenv("TAA_PASS_PACK_GROUPS");
+    const int most = cap ? std::max(1, std::atoi(cap)) : std::numeric_limits<int>::max();
     passLayout = packPassGroups(passHalf, [&](int groups, bool half) {
       const GLenum format = half ? GL_RGBA16F : GL_RGBA32F;
-      return gl::largestTextureArrayLayers(gl, groups * width, height, capacity(), format) >=
-             capacity();
+      return groups <= most &&
+             gl::largestTextureArrayLayers(gl, groups * width, height, capacity(), format) >=
+                 capacity();
     });
     for (const PassPackLayout::Pack& pack : passLayout.packs) {
       passPackRings.emplace_back(gl, int(pack.groups.size()) * width, height, capacity(),
