@@ -1141,8 +1141,9 @@ const Image& WindowResolver::lastDebug() const { return impl_->lastDebug; }
 
 int windowRadiusTheGlHolds(gl::Context& context, int asked, int width, int height) {
   if (width <= 0 || height <= 0) return asked;
-  // The colour ring (RGBA32UI) takes the most bytes a pixel of any ring (the pass rings' float
-  // groups as many): what holds it holds them.
+  // The colour ring (RGBA32UI) takes the most bytes a pixel of any ring (a float pass group
+  // as many; the pass rings hold several groups side by side only where the driver takes them,
+  // else one each): what holds it holds them.
   const int layers = gl::largestTextureArrayLayers(context.functions(), width, height,
                                                    2 * asked + 2, GL_RGBA32UI);
   return windowRadiusWithinLayers(asked, layers);
