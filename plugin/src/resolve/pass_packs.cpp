@@ -35,35 +35,19 @@ PassPackLayout packPassGroups(const std::vector<bool>& halfGroups,
 }
 
 void interleaveGroupRows(const ImageView& group, int firstRow, int rows, int index,
-                         int packGroups, bool half, unsigned char* out) {
-  if (!group || group.channels != 4 || firstRow < 0 || firstRow + rows > group.height ||
-      index < 0 || index >= packGroups) {
+                         const PassPackLayout::Pack& pack, unsigned char* out) {
+  if (!group || group.channels != 4 || (group.type == SampleType::Half) != pack.half ||
+      firstRow < 0 || firstRow + rows > group.height || index < 0 ||
+      index >= int(pack.groups.size())) {
     throw Error("pass packs: a group's rows do not fit its pack");
   }
+  const std::size_t texelBytes = pack.texelBytes(), stride = pack.pixelBytes();
   const std::size_t texels = std::size_t(rows) * std::size_t(group.width);
-  const std::size_t first = std::size_t(firstRow) * std::size_t(group.width);
-  const bool same = (group.type == SampleType::Half) == half;
-  const std::size_t texelBytes = half ? 4 * sizeof(Imath::half) : 4 * sizeof(float);
-  const std::size_t stride = texelBytes * std::size_t(packGroups);
+  const auto* from = static_cast<const unsigned char*>(group.data) +
+                     std::size_t(firstRow) * std::size_t(group.width) * texelBytes;
   unsigned char* to = out + texelBytes * std::size_t(index);
-  if (same) {
-    const auto* from = static_cast<const unsigned char*>(group.data) + first * texelBytes;
-    for (std::size_t t = 0; t < texels; ++t) {
-      std::memcpy(to + t * stride, from + t * texelBytes, texelBytes);
-    }
-    return;
-  }
   for (std::size_t t = 0; t < texels; ++t) {
-    for (std::size_t c = 0; c < 4; ++c) {
-      const std::size_t at = (first + t) * 4 + c;
-      if (half) {
-        const Imath::half value(static_cast<const float*>(group.data)[at]);
-        std::memcpy(to + t * stride + c * sizeof(Imath::half), &value, sizeof(Imath::half));
-      } else {
-        const float value = static_cast<const Imath::half*>(group.data)[at];
-        std::memcpy(to + t * stride + c * sizeof(float), &value, sizeof(float));
-      }
-    }
+    std::memcpy(to + t * stride, from + t * texelBytes, texelBytes);
   }
 }
 

@@ -16,6 +16,8 @@ struct PassPackLayout {
   struct Pack {
     bool half = false;        // RGBA16F, else RGBA32F
     std::vector<int> groups;  // the groups it holds, in their places
+    std::size_t texelBytes() const { return half ? 8 : 16; }  // a group's place
+    std::size_t pixelBytes() const { return texelBytes() * groups.size(); }
   };
   struct Place {
     int pack = 0, index = 0;
@@ -29,11 +31,11 @@ struct PassPackLayout {
 PassPackLayout packPassGroups(const std::vector<bool>& halfGroups,
                               const std::function<bool(int, bool)>& holds);
 
-// Rows firstRow..firstRow+rows-1 of `group` (RGBA, half or float) into their place in a band
-// of its pack's rows (`out`: rows x width x packGroups RGBA texels of the pack's type, half or
-// float, the band's first row first), converted where the group's type is not the pack's.
+// Rows firstRow..firstRow+rows-1 of `group` (RGBA of the pack's type) into place `index` of a
+// band of `pack`'s rows (`out`: rows x width x pack.pixelBytes(), the band's first row first).
+// Other places are left as they are.
 void interleaveGroupRows(const ImageView& group, int firstRow, int rows, int index,
-                         int packGroups, bool half, unsigned char* out);
+                         const PassPackLayout::Pack& pack, unsigned char* out);
 
 // The gather's defines for a draw of groups firstGroup..firstGroup+count-1 (window_gather.frag:
 // PASS_PACKS, PASS_PACK_OF, PASS_INDEX_OF, PASS_WIDTH_OF), and in `packsInDraw` the packs it

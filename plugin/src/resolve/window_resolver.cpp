@@ -428,14 +428,14 @@ struct WindowResolver::Impl {
     for (std::size_t p = 0; p < passLayout.packs.size(); ++p) {
       const PassPackLayout::Pack& pack = passLayout.packs[p];
       const int n = int(pack.groups.size());
-      const std::size_t rowBytes = std::size_t(width) * std::size_t(n) * (pack.half ? 8 : 16);
+      const std::size_t rowBytes = std::size_t(width) * pack.pixelBytes();
       const int bandRows = std::max(1, int(kBandBytes / rowBytes));
       passUploadBand.resize(std::size_t(std::min(bandRows, height)) * rowBytes);
       for (int row = 0; row < height; row += bandRows) {
         const int rows = std::min(bandRows, height - row);
         for (int i = 0; i < n; ++i) {
-          interleaveGroupRows(groups[std::size_t(pack.groups[std::size_t(i)])], row, rows, i, n,
-                              pack.half, passUploadBand.data());
+          interleaveGroupRows(groups[std::size_t(pack.groups[std::size_t(i)])], row, rows, i,
+                              pack, passUploadBand.data());
         }
         passPackRings[p].uploadRows(layer, row, rows, passUploadBand.data(), 4,
                                     pack.half ? GL_HALF_FLOAT : GL_FLOAT);
@@ -665,6 +665,15 @@ struct WindowResolver::Impl {
       if (!pass || pass.channels != 4 || pass.width != color.width ||
           pass.height != color.height) {
         throw Error("window resolve: a pass group is not four channels of the colour's size",
+                    {"", frame});
+      }
+    }
+    // Each group comes in its ring's type (PackedPasses are packed by the same plan).
+    for (std::size_t g = 0; g < passHalf.size(); ++g) {
+      if ((input.passGroups[g].type == SampleType::Half) != passHalf[g]) {
+        throw Error("window resolve: pass group " + std::to_string(g) + " is " +
+                        (passHalf[g] ? "float" : "half") + " where its ring is " +
+                        (passHalf[g] ? "half" : "float"),
                     {"", frame});
       }
     }
