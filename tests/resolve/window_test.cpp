@@ -949,6 +949,33 @@ TEST_F(WindowTest, TheFrameBufferPoolKeepsNothingWhileAResolverHasPasses) {
   releaseFrameBuffers();
 }
 
+// A pass group whose type is not its ring's (a face that packed by another plan) is refused
+// with a message naming the group and the frame, and the ring keeps nothing of it.
+TEST_F(WindowTest, APassGroupOfTheOtherTypeIsRefused) {
+  const Scene scene = staticEdge();
+  const Frame data = render(scene, 3);
+  WindowResolver resolver(*context_, windowOptions(1));
+  resolver.setPasses({true}, 0);  // a half group: the float colour is not one
+  ResolveInput input;
+  input.color = &data.color;
+  input.passGroups = {&data.color};
+  input.depth = &data.depth;
+  input.motion = &data.motion;
+  input.jitter = data.jitter;
+  input.window = {0, 0, kWidth, kHeight};
+  input.ndc = NdcConvention::ZeroOneYDown;
+  try {
+    resolver.addFrame(3, input);
+    FAIL() << "a float group went into a half ring";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("pass group 0 is float where its ring is half"),
+              std::string::npos)
+        << e.what();
+    EXPECT_EQ(e.context().frame, std::optional<int>(3));
+  }
+  EXPECT_FALSE(resolver.hasFrame(3));
+}
+
 TEST_F(WindowTest, AFullRingIsAnError) {
   const Scene scene = staticEdge();
   WindowResolver resolver(*context_, windowOptions(1));
