@@ -9,82 +9,87 @@
 
 uniform sampler2DArray uCrypto;  // RGBA32F: the first rank layer of each frame's samples
 
-// The pixel's IDs and weights (final: t's own, and each source once weighed whole), the
-// current source's, and the weight of every sample seen.
+// The pixel's IDs, each with two weights: settled (t's own samples, thin features, and each
+// source once weighed whole) and pending (the current source's, before its agreement and
+// frame weight are known). One set of slots for both, so that a sample is placed once and a
+// source is settled by one pass over the slots (before, the current source kept slots of its
+// own, merged ID by ID into the pixel's: two placements a sample and eight a source).
 uint gCryptoId[CRYPTO_SLOTS];
-float gCryptoWeight[CRYPTO_SLOTS];
-uint gSourceCryptoId[CRYPTO_SLOTS];
-float gSourceCryptoWeight[CRYPTO_SLOTS];
-float gCryptoTotal, gSourceCryptoTotal;
+float gCryptoSettled[CRYPTO_SLOTS];
+float gCryptoPending[CRYPTO_SLOTS];
+float gCryptoTotal, gCryptoPendingTotal;
 
-// Adds `weight` to `id` in the slots `ids`/`weights` (a macro: GLSL copies arrays passed to
-// functions, which llvmpipe pays for on every sample). Every index is the loop's counter, never
-// a computed slot: llvmpipe keeps arrays indexed only by unrolled counters in registers, and
-// moves an array indexed by a value (the lightest slot) to memory, for every access.
-#define CRYPTO_ADD(ids, weights, id, weight)                                          \
-  {                                                                                   \
-    uint cryptoId = (id);                                                             \
-    float cryptoWeight = (weight);                                                    \
-    bool placed = !(cryptoWeight > 0.0);                                              \
-    int lightest = 0;                                                                 \
-    float lightestWeight = 0.0;                                                       \
-    for (int slot = 0; slot < CRYPTO_SLOTS; ++slot) {                                 \
-      bool same = !placed && weights[slot] > 0.0 && ids[slot] == cryptoId;            \
-      weights[slot] += same ? cryptoWeight : 0.0;                                     \
-      placed = placed || same;                                                        \
-      bool lighter = slot == 0 || weights[slot] < lightestWeight;                     \
-      lightest = lighter ? slot : lightest;                                           \
-      lightestWeight = lighter ? weights[slot] : lightestWeight;                      \
-    }                                                                                 \
-    bool replace = !placed && cryptoWeight > lightestWeight;                          \
-    for (int slot = 0; slot < CRYPTO_SLOTS; ++slot) {                                 \
-      bool here = replace && slot == lightest;                                        \
-      ids[slot] = here ? cryptoId : ids[slot];                                        \
-      weights[slot] = here ? cryptoWeight : weights[slot];                            \
-    }                                                                                 \
+// Adds `settled` and `pending` to `id`'s slot, or takes the lightest slot for it. An empty slot
+// weighs nothing; a slot is judged by both weights together. (A macro: GLSL copies arrays
+// passed to functions, which llvmpipe pays for on every sample. Every index is the loop's
+// counter, never a computed slot: llvmpipe keeps arrays indexed only by unrolled counters in
+// registers, and moves an array indexed by a value (the lightest slot) to memory, for every
+// access.)
+#define CRYPTO_ADD(id, settled, pending)                                            \
+  {                                                                                 \
+    uint cryptoId = (id);                                                           \
+    float cryptoSettled = (settled), cryptoPending = (pending);                     \
+    float cryptoWeight = cryptoSettled + cryptoPending;                             \
+    bool placed = !(cryptoWeight > 0.0);                                            \
+    int lightest = 0;                                                               \
+    float lightestWeight = 0.0;                                                     \
+    for (int slot = 0; slot < CRYPTO_SLOTS; ++slot) {                               \
+      float held = gCryptoSettled[slot] + gCryptoPending[slot];                     \
+      bool same = !placed && held > 0.0 && gCryptoId[slot] == cryptoId;            \
+      gCryptoSettled[slot] += same ? cryptoSettled : 0.0;                           \
+      gCryptoPending[slot] += same ? cryptoPending : 0.0;                           \
+      placed = placed || same;                                                      \
+      bool lighter = slot == 0 || held < lightestWeight;                            \
+      lightest = lighter ? slot : lightest;                                         \
+      lightestWeight = lighter ? held : lightestWeight;                             \
+    }                                                                               \
+    bool replace = !placed && cryptoWeight > lightestWeight;                        \
+    for (int slot = 0; slot < CRYPTO_SLOTS; ++slot) {                               \
+      bool here = replace && slot == lightest;                                      \
+      gCryptoId[slot] = here ? cryptoId : gCryptoId[slot];                          \
+      gCryptoSettled[slot] = here ? cryptoSettled : gCryptoSettled[slot];           \
+      gCryptoPending[slot] = here ? cryptoPending : gCryptoPending[slot];           \
+    }                                                                               \
   }
 
 void cryptoBegin() {
   for (int slot = 0; slot < CRYPTO_SLOTS; ++slot) {
     gCryptoId[slot] = 0u;
-    gCryptoWeight[slot] = 0.0;
+    gCryptoSettled[slot] = 0.0;
+    gCryptoPending[slot] = 0.0;
   }
   gCryptoTotal = 0.0;
+  gCryptoPendingTotal = 0.0;
 }
 
+// A source left out (or not weighed) leaves nothing behind: its IDs' slots fall empty unless
+// settled weight holds them.
 void cryptoSourceBegin() {
-  for (int slot = 0; slot < CRYPTO_SLOTS; ++slot) {
-    gSourceCryptoId[slot] = 0u;
-    gSourceCryptoWeight[slot] = 0.0;
-  }
-  gSourceCryptoTotal = 0.0;
+  for (int slot = 0; slot < CRYPTO_SLOTS; ++slot) gCryptoPending[slot] = 0.0;
+  gCryptoPendingTotal = 0.0;
 }
 
-// A sample's two IDs (its `ranks` texel) into the pixel's own slots (`toSource` false) or the
-// source's.
-void cryptoAddRanks(vec4 ranks, float weight, bool toSource) {
-  float w0 = weight * max(ranks.y, 0.0), w1 = weight * max(ranks.w, 0.0);
-  if (toSource) {
-    CRYPTO_ADD(gSourceCryptoId, gSourceCryptoWeight, floatBitsToUint(ranks.x), w0)
-    CRYPTO_ADD(gSourceCryptoId, gSourceCryptoWeight, floatBitsToUint(ranks.z), w1)
-    gSourceCryptoTotal += w0 + w1;
-  } else {
-    CRYPTO_ADD(gCryptoId, gCryptoWeight, floatBitsToUint(ranks.x), w0)
-    CRYPTO_ADD(gCryptoId, gCryptoWeight, floatBitsToUint(ranks.z), w1)
-    gCryptoTotal += w0 + w1;
-  }
+// A sample's two IDs (its `ranks` texel), settled with `settled` and pending with `pending`.
+void cryptoAddRanks(vec4 ranks, float settled, float pending) {
+  float coverage0 = max(ranks.y, 0.0), coverage1 = max(ranks.w, 0.0);
+  CRYPTO_ADD(floatBitsToUint(ranks.x), settled * coverage0, pending * coverage0)
+  CRYPTO_ADD(floatBitsToUint(ranks.z), settled * coverage1, pending * coverage1)
+  gCryptoTotal += settled * (coverage0 + coverage1);
+  gCryptoPendingTotal += pending * (coverage0 + coverage1);
 }
 
-void cryptoAddSample(ivec2 texel, int layer, float weight, bool toSource) {
-  cryptoAddRanks(texelFetch(uCrypto, ivec3(texel, layer), 0), weight, toSource);
+void cryptoAddSample(ivec2 texel, int layer, float settled, float pending) {
+  cryptoAddRanks(texelFetch(uCrypto, ivec3(texel, layer), 0), settled, pending);
 }
 
-// The source weighed whole: its IDs join the pixel's with `scale` (agreement x frame weight).
+// The source weighed whole: its pending weights settle with `scale` (agreement x frame weight).
 void cryptoSourceEnd(float scale) {
   for (int slot = 0; slot < CRYPTO_SLOTS; ++slot) {
-    CRYPTO_ADD(gCryptoId, gCryptoWeight, gSourceCryptoId[slot], scale * gSourceCryptoWeight[slot])
+    gCryptoSettled[slot] += scale * gCryptoPending[slot];
+    gCryptoPending[slot] = 0.0;
   }
-  gCryptoTotal += scale * gSourceCryptoTotal;
+  gCryptoTotal += scale * gCryptoPendingTotal;
+  gCryptoPendingTotal = 0.0;
 }
 
 // The six heaviest IDs with their coverage, heaviest first, as three rank layers of two pairs
@@ -98,8 +103,8 @@ void cryptoOutput(out vec4 rank0, out vec4 rank1, out vec4 rank2) {
     float most = 0.0;
     uint id = 0u;
     for (int slot = 0; slot < CRYPTO_SLOTS; ++slot) {
-      bool heavier = !taken[slot] && gCryptoWeight[slot] > most;
-      most = heavier ? gCryptoWeight[slot] : most;
+      bool heavier = !taken[slot] && gCryptoSettled[slot] > most;
+      most = heavier ? gCryptoSettled[slot] : most;
       id = heavier ? gCryptoId[slot] : id;
       heaviest = heavier ? slot : heaviest;
     }

@@ -223,20 +223,11 @@ layout(rgba32f) uniform writeonly image2D uCryptoOutputs[3];  // at the band's r
 #else
 layout(location = 2) out vec4 outCrypto[3];
 #endif
-// A sample's IDs with `weight` (its share included) into the pixel's slots or the source's.
-#define ADD_CRYPTO(texel, layer, weight, toSource) \
-  cryptoAddSample(texel, layer, weight, toSource);
-// A sample into the pixel's slots with `weight` and the source's with `sourceWeight`, fetched
-// once.
-#define ADD_CRYPTO_TWICE(texel, layer, weight, sourceWeight)                    \
-  {                                                                             \
-    vec4 cryptoRanks = texelFetch(uCrypto, ivec3((texel), (layer)), 0);         \
-    cryptoAddRanks(cryptoRanks, weight, false);                                 \
-    cryptoAddRanks(cryptoRanks, sourceWeight, true);                            \
-  }
+// A sample's IDs with its weights (its share included): `settled` into the pixel's sums now,
+// `pending` into the current source's, settled when the source is weighed whole.
+#define ADD_CRYPTO(texel, layer, settled, pending) cryptoAddSample(texel, layer, settled, pending);
 #else
-#define ADD_CRYPTO(texel, layer, weight, toSource)
-#define ADD_CRYPTO_TWICE(texel, layer, weight, sourceWeight)
+#define ADD_CRYPTO(texel, layer, settled, pending)
 #endif
 #if PASS_GROUPS > 0
 // The groups' rings hold several groups of one type side by side (resolve/pass_packs): group
@@ -493,7 +484,7 @@ void addStaticSample(ivec2 corner, ivec2 step, bool skip, ivec2 taken, float fra
   float thinShared = thinWeight * SHARE(landed, true);
   float keptShared = (thin ? 0.0 : kept) * SHARE(landed, onNear);
   ADD_PASSES_TWICE(gPassSum, thinShared, gSourcePassSum, keptShared, texel, gSourcePassLayer)
-  ADD_CRYPTO_TWICE(texel, gSourcePassLayer, thinShared, keptShared)
+  ADD_CRYPTO(texel, gSourcePassLayer, thinShared, keptShared)
 }
 
 // The static samples of the current source in the 2x2 block at `corner` (with `skip`, those
@@ -531,7 +522,7 @@ void addMovingSample(ivec2 corner, ivec2 step, vec2 chained, bool alive) {
   ADD_TO_QUADRANTS(gSourceQuadrants, entry.colour, candidate ? weight : 0.0, offset)
   float movingShared = candidate ? weight * SHARE(offset, false) : 0.0;
   ADD_PASSES(gSourcePassSum, clamp(n, ivec2(0), gSize - 1), gSourcePassLayer, movingShared)
-  ADD_CRYPTO(clamp(n, ivec2(0), gSize - 1), gSourcePassLayer, movingShared, true)
+  ADD_CRYPTO(clamp(n, ivec2(0), gSize - 1), gSourcePassLayer, 0.0, movingShared)
 }
 
 // The moving samples of the current source in the 2x2 block around the chained point, if the
@@ -1004,7 +995,7 @@ void main() {
     float own = wanted == n ? spatialWeight(offset, uSigma) : 0.0;
     bool ownNear = depths[i] <= gNearest * (1.0 + gSplit);
     float ownShared = own * shareOf(offset, ownNear) + w * shareOf(offset, false);
-    ADD_CRYPTO(n, uTargetPassLayer, ownShared, false)
+    ADD_CRYPTO(n, uTargetPassLayer, ownShared, 0.0)
     ADD_PASSES(gPassSum, n, uTargetPassLayer,
                ownShared + uReconstructionWeight * uReconstruction[i] * reconstructionShare())
 #endif

@@ -329,6 +329,88 @@ TEST_F(PassesTest, CryptomatteAloneKeepsTheStratifiedBeautyAndFollowsIt) {
               stratified);
 }
 
+// More IDs around a pixel than it keeps slots for (eight): twelve IDs laid so that every
+// pixel's samples over the window carry most of them. A pixel keeps the heaviest it met; an ID
+// that had to take a lighter one's slot starts again from its sample, so a kept ID's coverage
+// is never more than its true share: the light pass of its matte, weighed as the beauty weighs
+// it. The ranks stay heaviest first and their sum at most 1 (dropped IDs still count). (Checked
+// to fail when a slot taken over keeps its old weight, and with five slots.)
+TEST_F(PassesTest, CryptomatteWithMoreIdsThanSlotsKeepsTheHeaviestAndNeverOvercounts) {
+  constexpr int kIds = 12;
+  const auto idOf = [](int index) { return 0.25f + float(index); };
+  const fs::path many = dir_ / "many-ids";
+  fs::create_directories(many);
+  for (int f = 1; f <= kFrames; ++f) {
+    const Exr in = readExr(in_ / frameName("beauty", f));
+    std::vector<std::string> names = {"R", "G", "B", "A"};
+    for (int i = 0; i < kIds; ++i) names.push_back("Matte" + std::to_string(i) + ".R");
+    for (const char* layer : {"CryptoObject00.", "CryptoObject01."}) {
+      for (const char* c : {"r", "g", "b", "a"}) names.push_back(layer + std::string(c));
+    }
+    OIIO::ImageSpec spec(kWidth, kHeight, int(names.size()), OIIO::TypeFloat);
+    spec.channelnames = names;
+    spec.alpha_channel = 3;
+    spec.attribute("cryptomatte/f834d0a/name", "CryptoObject");
+    std::vector<float> pixels;
+    for (std::size_t p = 0; p < in.spec.image_pixels(); ++p) {
+      const int x = int(p % kWidth), y = int(p / kWidth);
+      const int id = (x + 2 * y + 3 * f) % kIds;
+      for (const char* c : {"R", "G", "B", "A"}) pixels.push_back(in.at(p, c));
+      for (int i = 0; i < kIds; ++i) pixels.push_back(i == id ? 1.0f : 0.0f);
+      for (float v : {idOf(id), 1.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f}) pixels.push_back(v);
+    }
+    const fs::path path = many / frameName("beauty", f);
+    auto out = OIIO::ImageOutput::create(path.string());
+    ASSERT_TRUE(out && out->open(path.string(), spec));
+    ASSERT_TRUE(out->write_image(OIIO::TypeFloat, pixels.data()));
+    ASSERT_TRUE(out->close());
+    for (const char* aov : {"depth", "motion"}) {
+      fs::copy_file(in_ / frameName(aov, f), many / frameName(aov, f));
+    }
+  }
+  std::vector<std::string> args = test::separateFileArgs(many, dir_ / "many-out" / "r.####.exr");
+  args.insert(args.end(), {"--window-reconstruction-weight", "0"});
+  const ToolRun r = test::runTaatool(args, dir_);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const Exr out = readExr(dir_ / "many-out" / frameName("r", 3));
+  std::size_t full = 0, topExact = 0, crowded = 0;
+  for (std::size_t p = 0; p < out.spec.image_pixels(); ++p) {
+    float total = 0.0f, previous = 2.0f;
+    int ranks = 0;
+    for (const char* layer : {"CryptoObject00.", "CryptoObject01."}) {
+      for (const char* pair : {"rg", "ba"}) {
+        const float id = out.at(p, layer + std::string(1, pair[0]));
+        const float coverage = out.at(p, layer + std::string(1, pair[1]));
+        ASSERT_LE(coverage, previous) << "pixel " << p << ": ranks not heaviest first";
+        previous = coverage;
+        total += coverage;
+        if (coverage <= 0.0f) continue;
+        const int index = int(id);
+        ASSERT_EQ(id, idOf(index)) << "pixel " << p << ": an ID the input does not hold";
+        ASSERT_TRUE(index >= 0 && index < kIds) << "pixel " << p;
+        const float matte = out.at(p, "Matte" + std::to_string(index) + ".R");
+        ASSERT_LE(coverage, matte + 1e-4f) << "pixel " << p << ", ID " << index;
+        topExact += ranks == 0 && std::abs(coverage - matte) <= 1e-4f;
+        ++ranks;
+      }
+    }
+    ASSERT_LE(total, 1.0f + 1e-4f) << "pixel " << p;
+    full += ranks == 4;
+    // The IDs the pixel met, by their mattes.
+    int met = 0;
+    for (int i = 0; i < kIds; ++i) met += out.at(p, "Matte" + std::to_string(i) + ".R") > 0.0f;
+    crowded += met > 8;
+  }
+  const std::size_t pixels = out.spec.image_pixels();
+  // Pixels met more IDs than their slots, and fill the two rank layers.
+  EXPECT_GT(crowded, pixels / 2);
+  EXPECT_EQ(full, pixels);
+  // The heaviest ID keeps its whole share nearly everywhere.
+  EXPECT_GT(topExact, pixels * 9 / 10);
+  std::printf("Cryptomatte, %d IDs: more than 8 met in %zu of %zu pixels, the heaviest exact in "
+              "%zu\n", kIds, crowded, pixels, topExact);
+}
+
 // The gather writes its pass sums as images where the context has image stores (one draw for
 // every group and the first Cryptomatte set, in bands of 256 rows) and as draw buffers
 // otherwise (six groups a draw, a draw a Cryptomatte set; TAA_GL_IMAGE_STORES=0 chooses them):
