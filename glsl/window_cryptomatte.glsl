@@ -35,7 +35,7 @@ float gCryptoTotal, gCryptoPendingTotal;
     float lightestWeight = 0.0;                                                     \
     for (int slot = 0; slot < CRYPTO_SLOTS; ++slot) {                               \
       float held = gCryptoSettled[slot] + gCryptoPending[slot];                     \
-      bool same = !placed && held > 0.0 && gCryptoId[slot] == cryptoId;            \
+      bool same = !placed && held > 0.0 && gCryptoId[slot] == cryptoId;             \
       gCryptoSettled[slot] += same ? cryptoSettled : 0.0;                           \
       gCryptoPending[slot] += same ? cryptoPending : 0.0;                           \
       placed = placed || same;                                                      \

@@ -118,6 +118,20 @@ class PassesTest : public ::testing::Test {
     ASSERT_TRUE(out->close());
   }
 
+  // Frame f of another input in `folder`: `spec` and `pixels` as its beauty, in_'s depth and
+  // motion beside it.
+  void writeFrameInto(const fs::path& folder, int f, const OIIO::ImageSpec& spec,
+                      const std::vector<float>& pixels) const {
+    const fs::path path = folder / frameName("beauty", f);
+    auto out = OIIO::ImageOutput::create(path.string());
+    ASSERT_TRUE(out && out->open(path.string(), spec));
+    ASSERT_TRUE(out->write_image(OIIO::TypeFloat, pixels.data()));
+    ASSERT_TRUE(out->close());
+    for (const char* aov : {"depth", "motion"}) {
+      fs::copy_file(in_ / frameName(aov, f), folder / frameName(aov, f));
+    }
+  }
+
   ToolRun run(std::vector<std::string> extra, const std::string& out = "out") const {
     std::vector<std::string> args =
         test::separateFileArgs(in_, dir_ / out / "r.####.exr");
@@ -296,14 +310,7 @@ TEST_F(PassesTest, CryptomatteAloneKeepsTheStratifiedBeautyAndFollowsIt) {
       }
       for (int c = 0; c < 4; ++c) pixels.push_back(0.0f);
     }
-    const fs::path path = only / frameName("beauty", f);
-    auto out = OIIO::ImageOutput::create(path.string());
-    ASSERT_TRUE(out && out->open(path.string(), spec));
-    ASSERT_TRUE(out->write_image(OIIO::TypeFloat, pixels.data()));
-    ASSERT_TRUE(out->close());
-    for (const char* aov : {"depth", "motion"}) {
-      fs::copy_file(in_ / frameName(aov, f), only / frameName(aov, f));
-    }
+    writeFrameInto(only, f, spec, pixels);
   }
   auto resolve = [&](const std::string& out, std::vector<std::string> extra) {
     std::vector<std::string> args = test::separateFileArgs(only, dir_ / out / "r.####.exr");
@@ -359,14 +366,7 @@ TEST_F(PassesTest, CryptomatteWithMoreIdsThanSlotsKeepsTheHeaviestAndNeverOverco
       for (int i = 0; i < kIds; ++i) pixels.push_back(i == id ? 1.0f : 0.0f);
       for (float v : {idOf(id), 1.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f}) pixels.push_back(v);
     }
-    const fs::path path = many / frameName("beauty", f);
-    auto out = OIIO::ImageOutput::create(path.string());
-    ASSERT_TRUE(out && out->open(path.string(), spec));
-    ASSERT_TRUE(out->write_image(OIIO::TypeFloat, pixels.data()));
-    ASSERT_TRUE(out->close());
-    for (const char* aov : {"depth", "motion"}) {
-      fs::copy_file(in_ / frameName(aov, f), many / frameName(aov, f));
-    }
+    writeFrameInto(many, f, spec, pixels);
   }
   std::vector<std::string> args = test::separateFileArgs(many, dir_ / "many-out" / "r.####.exr");
   args.insert(args.end(), {"--window-reconstruction-weight", "0"});
