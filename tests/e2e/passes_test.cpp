@@ -14,6 +14,7 @@
 #include <filesystem>
 #include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "taa/taa.h"
@@ -231,13 +232,23 @@ TEST_F(PassesTest, EveryPassKeepsTheBeautyAloneAndFollowsIt) {
   std::printf("every pass: %zu pixels of the beauty differ from the plain mean's\n", stratified);
 }
 
+// A pixel's (ID, coverage) pairs over the two rank layers, in rank order.
+std::vector<std::pair<float, float>> rankPairsOf(const Exr& exr, std::size_t p) {
+  std::vector<std::pair<float, float>> pairs;
+  for (const char* layer : {"CryptoObject00.", "CryptoObject01."}) {
+    for (const char* pair : {"rg", "ba"}) {
+      pairs.emplace_back(exr.at(p, layer + std::string(1, pair[0])),
+                         exr.at(p, layer + std::string(1, pair[1])));
+    }
+  }
+  return pairs;
+}
+
 // The coverage of `id` over a pixel's rank pairs: how a comp pulls a matte.
 float matteOf(const Exr& exr, std::size_t p, float id) {
   float coverage = 0.0f;
-  for (const char* layer : {"CryptoObject00.", "CryptoObject01."}) {
-    const std::string l(layer);
-    if (exr.at(p, l + "r") == id) coverage += exr.at(p, l + "g");
-    if (exr.at(p, l + "b") == id) coverage += exr.at(p, l + "a");
+  for (const auto& [rankId, rankCoverage] : rankPairsOf(exr, p)) {
+    if (rankId == id) coverage += rankCoverage;
   }
   return coverage;
 }
@@ -256,16 +267,12 @@ TEST_F(PassesTest, CryptomatteCoverageIsTheWeightedShareOfTheSamples) {
   std::size_t softIn = 0, softOut = 0;
   for (std::size_t p = 0; p < out.spec.image_pixels(); ++p) {
     float total = 0.0f, previous = 2.0f;
-    for (const char* layer : {"CryptoObject00.", "CryptoObject01."}) {
-      for (const char* pair : {"rg", "ba"}) {
-        const float id = out.at(p, layer + std::string(1, pair[0]));
-        const float coverage = out.at(p, layer + std::string(1, pair[1]));
-        ASSERT_LE(coverage, previous) << "pixel " << p << ": ranks not heaviest first";
-        previous = coverage;
-        total += coverage;
-        if (coverage > 0.0f) {
-          ASSERT_TRUE(id == kIdRed || id == kIdOther) << "pixel " << p;
-        }
+    for (const auto& [id, coverage] : rankPairsOf(out, p)) {
+      ASSERT_LE(coverage, previous) << "pixel " << p << ": ranks not heaviest first";
+      previous = coverage;
+      total += coverage;
+      if (coverage > 0.0f) {
+        ASSERT_TRUE(id == kIdRed || id == kIdOther) << "pixel " << p;
       }
     }
     ASSERT_NEAR(total, 1.0f, 1e-4f) << "pixel " << p;
@@ -377,22 +384,18 @@ TEST_F(PassesTest, CryptomatteWithMoreIdsThanSlotsKeepsTheHeaviestAndNeverOverco
   for (std::size_t p = 0; p < out.spec.image_pixels(); ++p) {
     float total = 0.0f, previous = 2.0f;
     int ranks = 0;
-    for (const char* layer : {"CryptoObject00.", "CryptoObject01."}) {
-      for (const char* pair : {"rg", "ba"}) {
-        const float id = out.at(p, layer + std::string(1, pair[0]));
-        const float coverage = out.at(p, layer + std::string(1, pair[1]));
-        ASSERT_LE(coverage, previous) << "pixel " << p << ": ranks not heaviest first";
-        previous = coverage;
-        total += coverage;
-        if (coverage <= 0.0f) continue;
-        const int index = int(id);
-        ASSERT_EQ(id, idOf(index)) << "pixel " << p << ": an ID the input does not hold";
-        ASSERT_TRUE(index >= 0 && index < kIds) << "pixel " << p;
-        const float matte = out.at(p, "Matte" + std::to_string(index) + ".R");
-        ASSERT_LE(coverage, matte + 1e-4f) << "pixel " << p << ", ID " << index;
-        topExact += ranks == 0 && std::abs(coverage - matte) <= 1e-4f;
-        ++ranks;
-      }
+    for (const auto& [id, coverage] : rankPairsOf(out, p)) {
+      ASSERT_LE(coverage, previous) << "pixel " << p << ": ranks not heaviest first";
+      previous = coverage;
+      total += coverage;
+      if (coverage <= 0.0f) continue;
+      const int index = int(id);
+      ASSERT_EQ(id, idOf(index)) << "pixel " << p << ": an ID the input does not hold";
+      ASSERT_TRUE(index >= 0 && index < kIds) << "pixel " << p;
+      const float matte = out.at(p, "Matte" + std::to_string(index) + ".R");
+      ASSERT_LE(coverage, matte + 1e-4f) << "pixel " << p << ", ID " << index;
+      topExact += ranks == 0 && std::abs(coverage - matte) <= 1e-4f;
+      ++ranks;
     }
     ASSERT_LE(total, 1.0f + 1e-4f) << "pixel " << p;
     full += ranks == 4;
