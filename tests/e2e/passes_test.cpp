@@ -505,6 +505,42 @@ TEST_F(PassesTest, ImageStoresAndDrawBuffersWriteThePassesAlike) {
   }
 }
 
+// The passes go to the writer band by band as the GL draws them, the frame's write running
+// beside the pass draws: every channel the same as with the whole frame's sums written after the
+// draws (--threads 0), and a write that fails ends the run with its error rather than leaving
+// the GL waiting for it to take the next band.
+TEST_F(PassesTest, PassesStreamedToTheWriterAreTheWholeFramesAndAFailedWriteEndsTheRun) {
+  constexpr int kTallFrames = 3;  // 300 rows: two bands of the pass draws
+  in_ = dir_ / "tall";
+  test::writeSeparateFrames(in_, 1, kTallFrames, 24, 300);
+  for (int f = 1; f <= kTallFrames; ++f) addPasses(in_ / frameName("beauty", f));
+  const ToolRun streamed = run({"-v"}, "streamed");
+  const ToolRun whole = run({"-v", "--threads", "0"}, "whole");
+  ASSERT_EQ(streamed.exitCode, 0) << streamed.err;
+  ASSERT_EQ(whole.exitCode, 0) << whole.err;
+  const std::string told = "the passes go to the writer band by band";
+  EXPECT_NE(streamed.err.find(told), std::string::npos) << streamed.err;
+  EXPECT_EQ(whole.err.find(told), std::string::npos) << whole.err;
+  for (int f = 1; f <= kTallFrames; ++f) {
+    const Exr a = readExr(dir_ / "streamed" / frameName("r", f));
+    const Exr b = readExr(dir_ / "whole" / frameName("r", f));
+    ASSERT_EQ(a.spec.channelnames, b.spec.channelnames);
+    ASSERT_GT(a.spec.nchannels, 20);
+    ASSERT_EQ(a.pixels.size(), b.pixels.size());
+    std::size_t differing = 0;
+    for (std::size_t i = 0; i < a.pixels.size(); ++i) {
+      differing += std::memcmp(&a.pixels[i], &b.pixels[i], sizeof(float)) != 0;
+    }
+    EXPECT_EQ(differing, 0u) << "frame " << f;
+  }
+  // Frame 2's output path taken by a folder: its write fails once its bands have come.
+  fs::create_directories(dir_ / "failing" / frameName("r", 2));
+  const ToolRun failed = run({"-v"}, "failing");
+  EXPECT_NE(failed.exitCode, 0) << failed.err;
+  EXPECT_NE(failed.err.find(frameName("r", 2)), std::string::npos) << failed.err;
+  EXPECT_TRUE(fs::exists(dir_ / "failing" / frameName("r", 1)));
+}
+
 // A float data pass keeps values a half colour output cannot hold: the colour's 65504 limit is
 // the colour's alone (the pass was once clamped to it).
 TEST_F(PassesTest, FloatPassesKeepValuesBeyondHalfsRange) {

@@ -527,8 +527,9 @@ Input checks (reported on stderr with counts at the end of a run):
 GL and diagnostics:
   --gl auto|egl|osmesa     OpenGL back end (default auto: EGL, falling back to OSMesa)
   --threads N              frames read ahead and written behind while the GPU resolves
-                           (default 2, or 0 when the window resolve carries passes: each
-                           frame in flight holds ~0.4 GB at 1080p with every pass; 0: one
+                           (default 2; when the window resolve carries passes, none read
+                           ahead, each holding ~0.4 GB at 1080p with every pass, and the
+                           write beside the pass draws, taking them band by band; 0: one
                            step after another; at most 16). Output is identical.
   --info                   print GL vendor/renderer/version, OCIO and OIIO versions
   --list-brackets          list the tonemap brackets the active OCIO config offers

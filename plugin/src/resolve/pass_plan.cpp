@@ -11,6 +11,7 @@
 #include <tuple>
 #include <utility>
 
+#include "resolve/pass_band_stream.h"
 #include "taa/error.h"
 
 namespace taa {
@@ -219,8 +220,10 @@ namespace {
 // that a pixel's work is loads, a division and stores.
 class PassFinisher {
  public:
-  PassFinisher(const PassSums& sums, const Image& kept, const PassPlan& plan)
-      : sums_(sums), kept_(kept), plan_(plan) {
+  // `sums` may hold a band of the frame: its first pixel is the frame's pixel `sumsFirst`.
+  PassFinisher(const PassSums& sums, const Image& kept, const PassPlan& plan,
+               std::size_t sumsFirst = 0)
+      : sums_(sums), kept_(kept), plan_(plan), sumsFirst_(sumsFirst) {
     for (const TypedImage& group : sums.groups) {
       halfSums_.push_back(group.halves() ? group.halves()->pixels.data() : nullptr);
       floatSums_.push_back(group.floats() ? group.floats()->pixels.data() : nullptr);
@@ -260,7 +263,8 @@ class PassFinisher {
       for (std::size_t layer = 0; layer < set.layers.size(); ++layer) {
         for (std::size_t k = 0; k < 4; ++k) {
           target[std::size_t(set.layers[layer][k])] =
-              layer < 3 ? sums_.cryptomatte[3 * s + layer].pixels[4 * i + k] : 0.0f;
+              layer < 3 ? sums_.cryptomatte[3 * s + layer].pixels[4 * (i - sumsFirst_) + k]
+                        : 0.0f;
         }
       }
     }
@@ -297,13 +301,15 @@ class PassFinisher {
 
  private:
   float sum(int value, std::size_t i) const {
-    const std::size_t group = std::size_t(value / 4), at = 4 * i + std::size_t(value % 4);
+    const std::size_t group = std::size_t(value / 4);
+    const std::size_t at = 4 * (i - sumsFirst_) + std::size_t(value % 4);
     return halfSums_[group] ? float(halfSums_[group][at]) : floatSums_[group][at];
   }
 
   const PassSums& sums_;
   const Image& kept_;
   const PassPlan& plan_;
+  const std::size_t sumsFirst_;
   std::vector<const Imath::half*> halfSums_;
   std::vector<const float*> floatSums_;
   std::vector<char> halfChannel_;  // per channel: 1 where the file holds it as half
@@ -344,6 +350,37 @@ io::ExtraChannels::Packed finishPassesPacked(PassSums sums, Image kept, PassPlan
   auto inputs = std::make_shared<const Inputs>(std::move(sums), std::move(kept), std::move(plan));
   out.rows = [inputs](std::size_t first, std::size_t count, unsigned char* to,
                       std::size_t stride) { inputs->finisher.packed(first, count, to, stride); };
+  return out;
+}
+
+io::ExtraChannels::Packed finishPassesStreamed(std::shared_ptr<PassBandStream> stream, int frame,
+                                               Image kept, PassPlan plan, int width,
+                                               int height) {
+  io::ExtraChannels::Packed out;
+  out.width = width;
+  out.height = height;
+  struct Inputs {
+    std::shared_ptr<PassBandStream> stream;
+    int frame;
+    Image kept;
+    PassPlan plan;
+  };
+  auto inputs = std::make_shared<const Inputs>(
+      Inputs{std::move(stream), frame, std::move(kept), std::move(plan)});
+  const std::size_t rowPixels = std::size_t(width);
+  out.rows = [inputs, rowPixels](std::size_t first, std::size_t count, unsigned char* to,
+                                 std::size_t stride) {
+    // Band by band of the GL's (a call may cross from one into the next).
+    while (count > 0) {
+      const PassBandStream::Band& band = inputs->stream->band(inputs->frame, int(first / rowPixels));
+      const std::size_t bandFirst = std::size_t(band.firstRow) * rowPixels;
+      const std::size_t n = std::min(count, bandFirst + std::size_t(band.rows) * rowPixels - first);
+      PassFinisher(band.sums, inputs->kept, inputs->plan, bandFirst).packed(first, n, to, stride);
+      first += n;
+      count -= n;
+      to += n * stride;
+    }
+  };
   return out;
 }
 

@@ -14,6 +14,7 @@
 #include <OpenImageIO/typedesc.h>
 
 #include <array>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -22,6 +23,8 @@
 #include "util/image.h"
 
 namespace taa {
+
+class PassBandStream;
 
 struct PassPlan {
   std::vector<std::string> names;            // the channels, as read
@@ -102,5 +105,10 @@ Image finishPasses(const PassSums& sums, const Image& kept, const PassPlan& plan
 // frame's finished passes (190 bytes a pixel for a render's every pass) are never held whole;
 // what they are made from is held until then.
 io::ExtraChannels::Packed finishPassesPacked(PassSums sums, Image kept, PassPlan plan);
+// The same, finished from `frame`'s sums as the GL thread hands them over band by band
+// (resolve/pass_band_stream): the writer waits for each band it reaches.
+io::ExtraChannels::Packed finishPassesStreamed(std::shared_ptr<PassBandStream> stream, int frame,
+                                               Image kept, PassPlan plan, int width,
+                                               int height);
 
 }  // namespace taa

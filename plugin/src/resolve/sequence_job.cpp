@@ -1,6 +1,7 @@
 #include "resolve/sequence_job.h"
 
 #include <algorithm>
+#include <exception>
 #include <filesystem>
 #include <map>
 #include <memory>
@@ -18,6 +19,7 @@
 #include "io/views.h"
 #include "resolve/jitter.h"
 #include "resolve/option_registry.h"
+#include "resolve/pass_band_stream.h"
 #include "resolve/pass_plan.h"
 #include "resolve/projection_jitter.h"
 #include "resolve/frame_queues.h"
@@ -659,6 +661,10 @@ ResolveOptions windowOptionsOf(const JobRun& run, gl::Context& context,
   return options;
 }
 
+// Bands of pass sums read back and not yet packed by the writer: one, which the writer packs
+// while the GL draws the next band into its own images.
+constexpr int kStreamedPassBands = 1;
+
 // One window-mode run: frames enter the views' rings as they are read (once each, in order)
 // and leave when no later window needs them; each output frame is resolved from its window
 // alone, its passes finished from the sums as the writer packs them.
@@ -693,6 +699,13 @@ class WindowRun {
       const int frame = outputs_[std::size_t(index)];
       const FrameWindow window = plan_.windows.at(frame);
       dropFramesBefore(window.first);
+      if (passBands_ && !reads_.done() && reads_.peek() <= window.last) {
+        // A frame with every pass read while the last is still written would pass the 4 GiB
+        // bar at 1080p (docs/PERFORMANCE.md, "The passes streamed to the writer"): the write
+        // runs beside the pass draws, the read after it.
+        writes_.finish();
+        passBands_->releaseIdle();
+      }
       while (!reads_.done() && reads_.peek() <= window.last) addToRings(reads_.next());
       resolveAndWrite(index, window);
     }
@@ -742,8 +755,22 @@ class WindowRun {
       }
     }
     if (!ioDepthSet_) {
-      reads_.setDepth(ioDepthOf(job_, hasPasses()));
-      writes_.setDepth(ioDepthOf(job_, hasPasses()));
+      const int depth = ioDepthOf(job_, hasPasses());
+      reads_.setDepth(depth);
+      // The passes streamed to the writer need the write on its own thread: one frame's, beside
+      // the GL's pass draws (the frame-sized sums it saves pay for it).
+      const bool streamable = resolvers_.size() == 1 && hasPasses() &&
+                              passPlans_.front()->halfOrFloat && !job_.debugLayers &&
+                              resolvers_.front()->canStreamPasses();
+      const int writeDepth = streamable && job_.ioThreads == kAutoIoThreads ? 1 : depth;
+      if (streamable && writeDepth > 0) {
+        passBands_ = std::make_shared<PassBandStream>(kStreamedPassBands);
+        if (run_.callbacks.detail) {
+          run_.callbacks.detail("window resolve: the passes go to the writer band by band as "
+                                "they are drawn, each frame written beside its pass draws");
+        }
+      }
+      writes_.setDepth(writeDepth);
       ioDepthSet_ = true;
     }
   }
@@ -809,6 +836,10 @@ class WindowRun {
     FrameReport& report = reports_[std::size_t(index)] = run_.reportOf(data, index);
     report.historyReset = plan_.shotStarts.count(frame) > 0;
     if (run_.callbacks.frameRead) run_.callbacks.frameRead(report);
+    // Pass-through channels would be joined with the passes, which unpacks them whole first.
+    if (passBands_ && data.passthrough.names.empty()) {
+      return resolveStreamingAndWrite(index, window, std::move(data));
+    }
     std::vector<TypedImage> views;
     std::vector<io::ExtraChannels> passes;
     for (std::size_t v = 0; v < resolvers_.size(); ++v) {
@@ -828,6 +859,53 @@ class WindowRun {
                  index);
   }
 
+  // One view's frame whose write starts once its colour is drawn, its passes packed as the
+  // GL's pass bands come (resolve/pass_band_stream).
+  void resolveStreamingAndWrite(int index, const FrameWindow& window, io::FrameData data) {
+    const int frame = outputs_[std::size_t(index)];
+    io::ExtraChannels passes = std::move(data.passes);
+    passes.names = outputNamesOfView(std::move(passes.names), *run_.layouts.front());
+    passes.packed = finishPassesStreamed(passBands_, frame, std::move(passes.image),
+                                         *passPlans_.front(), data.colorSpec.width,
+                                         data.colorSpec.height);
+    passes.image = Image();
+    // A failed write of an earlier frame comes out of the push: it names its own file and frame.
+    std::exception_ptr writeFailed;
+    const auto startWrite = [&](TypedImage colour) {
+      std::vector<io::ExtraChannels> views(1);
+      views.front() = std::move(passes);
+      std::function<void()> write = run_.writeOf(data, std::move(colour), {}, {}, std::move(views));
+      try {
+        writes_.push(
+            [write = std::move(write), bands = passBands_, frame] {
+              // However the write ends, the GL thread is not left waiting for it to take a band.
+              struct Finished {
+                PassBandStream& bands;
+                int frame;
+                ~Finished() { bands.finished(frame); }
+              } finished{*bands, frame};
+              write();
+            },
+            index);
+      } catch (...) {
+        writeFailed = std::current_exception();
+        throw;
+      }
+    };
+    try {
+      try {
+        resolvers_.front()->resolveStreaming(frame, window.first, window.last,
+                                             run_.outputTypeOf(data, 0), startWrite, *passBands_);
+      } catch (const Error& e) {
+        if (writeFailed) std::rethrow_exception(writeFailed);
+        throw Error(e.description(), {data.colorPath, data.frame, e.context().channel});
+      }
+    } catch (...) {
+      passBands_->abandon(frame);  // a write started waits for bands that will not come
+      throw;
+    }
+  }
+
   JobRun& run_;
   const SequenceJob& job_;
   const std::vector<int> outputs_;  // in order
@@ -840,6 +918,7 @@ class WindowRun {
   std::vector<std::optional<PassPlan>> passPlans_;
   std::string passFile_;  // the file the plans came from, for the message when one differs
   bool ioDepthSet_ = false;
+  std::shared_ptr<PassBandStream> passBands_;  // where the passes are streamed to the writer
   std::vector<int> inRing_;
   std::map<int, io::FrameData> waiting_;  // read output frames, pixels dropped once uploaded
   bool toldVectorsOnly_ = false;

@@ -16,6 +16,7 @@
 #include "color/ocio_bracket.h"
 #include "color/ocio_gpu_resources.h"
 #include "gl/objects.h"
+#include "resolve/pass_band_stream.h"
 #include "resolve/pass_packs.h"
 #include "resolve/reconstruction_filter.h"
 #include "resolve/resolve_input.h"
@@ -847,7 +848,20 @@ struct WindowResolver::Impl {
     return true;
   }
 
-  TypedImage resolve(int frame, int first, int last, SampleType outputType) {
+  // Every pass in one draw, band by band: what a writer can take as the bands come.
+  bool canStreamPasses() const {
+    return passImages() && int(passHalf.size()) <= passGroupsPerDraw() && cryptomatteSets <= 1;
+  }
+
+  // With `colourReady` given, the colour goes to it once the beauty is drawn and the passes'
+  // sums to `stream` band by band (canStreamPasses); the result is then empty.
+  TypedImage resolve(int frame, int first, int last, SampleType outputType,
+                     const std::function<void(TypedImage)>& colourReady = {},
+                     PassBandStream* stream = nullptr) {
+    if (stream && !canStreamPasses()) {
+      throw Error("window resolve: these passes are not drawn in one band-by-band draw and "
+                  "cannot be streamed", {"", frame});
+    }
     if (!slots.count(frame) || frame < first || frame > last) {
       throw Error("window resolve: frame " + std::to_string(frame) + " is not in the ring",
                   {"", frame});
@@ -1009,20 +1023,48 @@ struct WindowResolver::Impl {
       }
     };
     // Read back into the last frame's images where they are still here (takePassSums gives
-    // them away); fresh ones come from the frame buffer pool.
-    lastSums.groups.resize(std::size_t(groups));
-    for (int g = 0; g < groups; ++g) {
+    // them away); fresh ones come from the frame buffer pool. Streamed, none are kept.
+    if (stream) lastSums = PassSums();
+    lastSums.groups.resize(stream ? 0 : std::size_t(groups));
+    for (int g = 0; g < int(lastSums.groups.size()); ++g) {
       TypedImage& sums = lastSums.groups[std::size_t(g)];
       const SampleType type = passHalf[std::size_t(g)] ? SampleType::Half : SampleType::Float;
       if (sums.width() != width || sums.height() != height || sums.type() != type) {
         sums = TypedImage(width, height, 4, type);
       }
     }
-    lastSums.cryptomatte.resize(std::size_t(3 * cryptomatteSets));
+    lastSums.cryptomatte.resize(stream ? 0 : std::size_t(3 * cryptomatteSets));
     for (Image& ranks : lastSums.cryptomatte) {
       if (ranks.width != width || ranks.height != height) ranks = Image(width, height, 4);
     }
     drawGather(0, false, {}, gatherTarget, [](const gl::Program&) {});
+    if (colourReady) {
+      // The pass draws leave the colour as it is (its writes masked): the writer may start.
+      TypedImage colour(width, height, 4, outputType);
+      gatherTarget.readRGBA(colour.data(), glType(outputType), 0);
+      colourReady(std::move(colour));
+    }
+    // A band's sums, read back into buffers of the stream's (band-sized images) and handed on.
+    auto streamBand = [&](int firstRow) {
+      PassSums band = stream->take();
+      band.groups.resize(std::size_t(groups));
+      for (int g = 0; g < groups; ++g) {
+        TypedImage& sums = band.groups[std::size_t(g)];
+        const SampleType type = passHalf[std::size_t(g)] ? SampleType::Half : SampleType::Float;
+        if (sums.width() != width || sums.height() != bandRows || sums.type() != type) {
+          sums = TypedImage(width, bandRows, 4, type);
+        }
+        passOutputs[std::size_t(g)].readRGBA(sums.data(), glType(type));
+      }
+      band.cryptomatte.resize(std::size_t(3 * cryptomatteSets));
+      for (int rank = 0; rank < 3 * cryptomatteSets; ++rank) {
+        Image& ranks = band.cryptomatte[std::size_t(rank)];
+        if (ranks.width != width || ranks.height != bandRows) ranks = Image(width, bandRows, 4);
+        passOutputs[std::size_t(cryptomatteOutput() + rank)].readRGBA(ranks.pixels.data(),
+                                                                       GL_FLOAT);
+      }
+      stream->publish(frame, firstRow, std::min(bandRows, height - firstRow), std::move(band));
+    };
     // With image stores the pass draws' target is the colour's, left as the beauty wrote it
     // (the mask put back however the draws end: a resolver outlives a failed frame).
     struct ColourWritesOff {
@@ -1065,6 +1107,7 @@ struct WindowResolver::Impl {
         continue;
       }
       drawGather(drawGroups, joined, packDefines, target, bind, [&](int row) {
+        if (stream) return streamBand(row);
         for (int g = 0; g < drawGroups; ++g) {
           TypedImage& sums = lastSums.groups[std::size_t(firstGroup + g)];
           readBand(passOutputs[std::size_t(g)], sums.data(), glType(sums.type()),
@@ -1097,6 +1140,7 @@ struct WindowResolver::Impl {
         }
       }
     }
+    if (colourReady) return TypedImage();
     TypedImage result(width, height, 4, outputType);
     gatherTarget.readRGBA(result.data(), glType(outputType), 0);
     return result;
@@ -1129,6 +1173,14 @@ void WindowResolver::clear() {
 TypedImage WindowResolver::resolve(int frame, int first, int last, SampleType outputType) {
   return impl_->resolve(frame, first, last, outputType);
 }
+
+void WindowResolver::resolveStreaming(int frame, int first, int last, SampleType outputType,
+                                      const std::function<void(TypedImage)>& colourReady,
+                                      PassBandStream& bands) {
+  impl_->resolve(frame, first, last, outputType, colourReady, &bands);
+}
+
+bool WindowResolver::canStreamPasses() const { return impl_->canStreamPasses(); }
 
 void WindowResolver::setDebugOutput(bool enabled) { impl_->debugOutput = enabled; }
 

@@ -5,6 +5,7 @@
 // chunking of a shot resolves the same frames bit for bit.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -16,6 +17,8 @@
 #include "util/image.h"
 
 namespace taa {
+
+class PassBandStream;
 
 // Per-pixel diagnostics of the last resolved frame (setDebugOutput): weight gathered (frame
 // t's own samples and its reconstruction included), fraction of candidate samples rejected
@@ -48,6 +51,16 @@ class WindowResolver {
   // depends on those frames and the options alone: which samples are static is decided within
   // the window (each frame against the one before it there, the first against the one after).
   TypedImage resolve(int frame, int first, int last, SampleType outputType);
+
+  // As resolve, for a writer that takes the passes as they come (resolve/pass_band_stream):
+  // `colourReady` gets the colour once the beauty is drawn, before the passes' draws, and the
+  // passes' sums go into `bands` band by band instead of being kept for takePassSums. The
+  // colour and every pass are the same as resolve's. Only where canStreamPasses().
+  void resolveStreaming(int frame, int first, int last, SampleType outputType,
+                        const std::function<void(TypedImage)>& colourReady, PassBandStream& bands);
+  // Whether the passes set are drawn in one draw band by band (image stores, every group and at
+  // most one Cryptomatte set in it), which streaming needs.
+  bool canStreamPasses() const;
 
   // Pass values summed with the beauty's weights (resolve/pass_plan): `halfGroups[g]` says
   // whether group g's ring may hold halves (every channel in it was half); and the number of
