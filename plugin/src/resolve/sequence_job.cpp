@@ -443,12 +443,15 @@ struct JobRun {
     lastCameraSource = std::move(source);
   }
 
-  // Errors of the resolve name the frame's colour file.
+  // Errors of the resolve name the frame's colour file, but for one `namedElsewhere` holds by
+  // then: an earlier frame's failed write met during this resolve, which names its own file.
   template <typename F>
-  TypedImage resolveNaming(const io::FrameData& data, F resolve) const {
+  auto resolveNaming(const io::FrameData& data, F resolve,
+                     const std::exception_ptr* namedElsewhere = nullptr) const {
     try {
       return resolve();
     } catch (const Error& e) {
+      if (namedElsewhere && *namedElsewhere) std::rethrow_exception(*namedElsewhere);
       throw Error(e.description(), {data.colorPath, data.frame, e.context().channel});
     }
   }
@@ -893,13 +896,14 @@ class WindowRun {
       }
     };
     try {
-      try {
-        resolvers_.front()->resolveStreaming(frame, window.first, window.last,
-                                             run_.outputTypeOf(data, 0), startWrite, *passBands_);
-      } catch (const Error& e) {
-        if (writeFailed) std::rethrow_exception(writeFailed);
-        throw Error(e.description(), {data.colorPath, data.frame, e.context().channel});
-      }
+      run_.resolveNaming(
+          data,
+          [&] {
+            resolvers_.front()->resolveStreaming(frame, window.first, window.last,
+                                                 run_.outputTypeOf(data, 0), startWrite,
+                                                 *passBands_);
+          },
+          &writeFailed);
     } catch (...) {
       passBands_->abandon(frame);  // a write started waits for bands that will not come
       throw;

@@ -422,6 +422,23 @@ struct WindowResolver::Impl {
     }
   }
 
+  // `sums` made to hold `rows` rows of every group (by its ring type: half groups' sums as
+  // half) and every Cryptomatte rank; images already of that size are kept, not reallocated.
+  void sizePassSums(PassSums& sums, int rows) const {
+    sums.groups.resize(passHalf.size());
+    for (std::size_t g = 0; g < passHalf.size(); ++g) {
+      TypedImage& group = sums.groups[g];
+      const SampleType type = passHalf[g] ? SampleType::Half : SampleType::Float;
+      if (group.width() != width || group.height() != rows || group.type() != type) {
+        group = TypedImage(width, rows, 4, type);
+      }
+    }
+    sums.cryptomatte.resize(std::size_t(3 * cryptomatteSets));
+    for (Image& ranks : sums.cryptomatte) {
+      if (ranks.width != width || ranks.height != rows) ranks = Image(width, rows, 4);
+    }
+  }
+
   // A frame's pass groups into their packs' layer `layer`, a band of rows at a time (a pack's
   // whole layer interleaved would be 130 MB more at 1080p on a run whose bar is 4 GiB).
   void uploadPassGroups(const std::vector<ImageView>& groups, int layer) {
@@ -1024,18 +1041,10 @@ struct WindowResolver::Impl {
     };
     // Read back into the last frame's images where they are still here (takePassSums gives
     // them away); fresh ones come from the frame buffer pool. Streamed, none are kept.
-    if (stream) lastSums = PassSums();
-    lastSums.groups.resize(stream ? 0 : std::size_t(groups));
-    for (int g = 0; g < int(lastSums.groups.size()); ++g) {
-      TypedImage& sums = lastSums.groups[std::size_t(g)];
-      const SampleType type = passHalf[std::size_t(g)] ? SampleType::Half : SampleType::Float;
-      if (sums.width() != width || sums.height() != height || sums.type() != type) {
-        sums = TypedImage(width, height, 4, type);
-      }
-    }
-    lastSums.cryptomatte.resize(stream ? 0 : std::size_t(3 * cryptomatteSets));
-    for (Image& ranks : lastSums.cryptomatte) {
-      if (ranks.width != width || ranks.height != height) ranks = Image(width, height, 4);
+    if (stream) {
+      lastSums = PassSums();
+    } else {
+      sizePassSums(lastSums, height);
     }
     drawGather(0, false, {}, gatherTarget, [](const gl::Program&) {});
     if (colourReady) {
@@ -1047,21 +1056,14 @@ struct WindowResolver::Impl {
     // A band's sums, read back into buffers of the stream's (band-sized images) and handed on.
     auto streamBand = [&](int firstRow) {
       PassSums band = stream->take();
-      band.groups.resize(std::size_t(groups));
+      sizePassSums(band, bandRows);
       for (int g = 0; g < groups; ++g) {
         TypedImage& sums = band.groups[std::size_t(g)];
-        const SampleType type = passHalf[std::size_t(g)] ? SampleType::Half : SampleType::Float;
-        if (sums.width() != width || sums.height() != bandRows || sums.type() != type) {
-          sums = TypedImage(width, bandRows, 4, type);
-        }
-        passOutputs[std::size_t(g)].readRGBA(sums.data(), glType(type));
+        passOutputs[std::size_t(g)].readRGBA(sums.data(), glType(sums.type()));
       }
-      band.cryptomatte.resize(std::size_t(3 * cryptomatteSets));
       for (int rank = 0; rank < 3 * cryptomatteSets; ++rank) {
-        Image& ranks = band.cryptomatte[std::size_t(rank)];
-        if (ranks.width != width || ranks.height != bandRows) ranks = Image(width, bandRows, 4);
-        passOutputs[std::size_t(cryptomatteOutput() + rank)].readRGBA(ranks.pixels.data(),
-                                                                       GL_FLOAT);
+        passOutputs[std::size_t(cryptomatteOutput() + rank)].readRGBA(
+            band.cryptomatte[std::size_t(rank)].pixels.data(), GL_FLOAT);
       }
       stream->publish(frame, firstRow, std::min(bandRows, height - firstRow), std::move(band));
     };
