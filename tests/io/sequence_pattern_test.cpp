@@ -82,6 +82,18 @@ TEST(ParseFrameRange, ListKeepsOrderAndDropsDuplicates) {
   EXPECT_EQ(parseFrameRange("10,1-3"), Frames({10, 1, 2, 3}));
   EXPECT_EQ(parseFrameRange("1-3,2-4"), Frames({1, 2, 3, 4}));
   EXPECT_EQ(parseFrameRange(" 1-2 , 5 "), Frames({1, 2, 5}));
+  EXPECT_EQ(parseFrameRange("5,3,5,1-3,9"), Frames({5, 3, 1, 2, 9}));
+}
+
+TEST(ParseFrameRange, AListOfMoreThanTenMillionFramesIsRefused) {
+  // Each item is under the cap; together they pass it.
+  try {
+    parseFrameRange("1-6000000,1-6000000");
+    FAIL() << "expected an error";
+  } catch (const Error& e) {
+    EXPECT_NE(e.description().find("more than 10 million frames"), std::string::npos)
+        << e.description();
+  }
 }
 
 TEST(ParseFrameRange, NegativeFrames) {
