@@ -69,17 +69,63 @@ TEST_F(FrameBufferPoolTest, SmallBuffersAreNotKept) {
   EXPECT_EQ(keptFrameBufferBytes(), 0u);
 }
 
-TEST_F(FrameBufferPoolTest, KeepsAtMostSixteenBuffers) {
+TEST_F(FrameBufferPoolTest, KeepsAtMostThirtyTwoBuffers) {
   std::vector<void*> buffers;
-  for (int i = 0; i < 20; ++i) buffers.push_back(takeFrameBuffer(kFrameBytes));
+  for (int i = 0; i < 36; ++i) buffers.push_back(takeFrameBuffer(kFrameBytes));
   for (void* b : buffers) giveBackFrameBuffer(b, kFrameBytes);
-  EXPECT_EQ(keptFrameBufferBytes(), 16 * kFrameBytes);
-  // The four given back first were freed; the newest sixteen are served, newest first.
-  for (int i = 19; i >= 4; --i) {
+  EXPECT_EQ(keptFrameBufferBytes(), 32 * kFrameBytes);
+  // The four given back first were freed; the newest thirty-two are served, newest first.
+  for (int i = 35; i >= 4; --i) {
     void* again = takeFrameBuffer(kFrameBytes);
     EXPECT_EQ(again, buffers[std::size_t(i)]) << i;
   }
-  for (int i = 4; i < 20; ++i) giveBackFrameBuffer(buffers[std::size_t(i)], kFrameBytes);
+  for (int i = 4; i < 36; ++i) giveBackFrameBuffer(buffers[std::size_t(i)], kFrameBytes);
+}
+
+// A run whose peak is its bar (every pass) keeps its frames' buffers for the next frame even
+// where a resolver with passes says to keep none; once it ends, the resolver's word holds.
+TEST_F(FrameBufferPoolTest, KeptFrameToFrameKeepsBuffersWhereNotKeptWouldNot) {
+  FrameBuffersNotKept notKept;
+  {
+    FrameBuffersKeptFrameToFrame frameToFrame;
+    void* first = takeFrameBuffer(kFrameBytes);
+    giveBackFrameBuffer(first, kFrameBytes);
+    EXPECT_EQ(keptFrameBufferBytes(), kFrameBytes);
+    EXPECT_EQ(takeFrameBuffer(kFrameBytes), first);
+    giveBackFrameBuffer(first, kFrameBytes);
+  }
+  EXPECT_EQ(keptFrameBufferBytes(), 0u);  // freed with the guard
+  giveBackFrameBuffer(takeFrameBuffer(kFrameBytes), kFrameBytes);
+  EXPECT_EQ(keptFrameBufferBytes(), 0u);
+}
+
+// nextFrame() frees what lay idle through a whole frame (given back before the last call and
+// not taken since); a buffer taken again and given back within the frame stays.
+TEST_F(FrameBufferPoolTest, NextFrameFreesTheBuffersIdleThroughAWholeFrame) {
+  FrameBuffersKeptFrameToFrame frameToFrame;
+  void* reused = takeFrameBuffer(kFrameBytes);
+  void* idle = takeFrameBuffer(2 * kFrameBytes);
+  giveBackFrameBuffer(reused, kFrameBytes);
+  giveBackFrameBuffer(idle, 2 * kFrameBytes);
+  frameToFrame.nextFrame();  // both were given back in this frame: kept
+  EXPECT_EQ(keptFrameBufferBytes(), 3 * kFrameBytes);
+  ASSERT_EQ(takeFrameBuffer(kFrameBytes), reused);
+  giveBackFrameBuffer(reused, kFrameBytes);
+  frameToFrame.nextFrame();  // `idle` was not taken again
+  EXPECT_EQ(keptFrameBufferBytes(), kFrameBytes);
+  EXPECT_EQ(takeFrameBuffer(kFrameBytes), reused);
+  giveBackFrameBuffer(reused, kFrameBytes);
+}
+
+TEST_F(FrameBufferPoolTest, ABufferFreedWhileFreedAtOnceLivesIsNotKept) {
+  void* kept = takeFrameBuffer(kFrameBytes);
+  giveBackFrameBuffer(kept, kFrameBytes);
+  void* freed = takeFrameBuffer(2 * kFrameBytes);
+  {
+    FrameBuffersFreedAtOnce atOnce;
+    giveBackFrameBuffer(freed, 2 * kFrameBytes);
+  }
+  EXPECT_EQ(keptFrameBufferBytes(), kFrameBytes);  // what was kept before stays
 }
 
 TEST_F(FrameBufferPoolTest, ImagesOfAFrameSizeReuseTheSameMemoryZeroed) {

@@ -3,6 +3,7 @@
 #include <string>
 
 #include "taa/error.h"
+#include "util/frame_buffer_pool.h"
 
 namespace taa {
 
@@ -87,6 +88,7 @@ void PassBandStream::finished(int frame) {
 
 void PassBandStream::releaseIdle() {
   std::lock_guard<std::mutex> lock(mutex_);
+  const FrameBuffersFreedAtOnce freedAtOnce;  // not kept in the pool: the room is for the read
   made_ -= int(free_.size());
   free_.clear();
 }

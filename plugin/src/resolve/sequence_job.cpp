@@ -709,6 +709,9 @@ class WindowRun {
         writes_.finish();
         passBands_->releaseIdle();
       }
+      if (keptFrameToFrame_ && !reads_.done() && reads_.peek() <= window.last) {
+        keptFrameToFrame_->nextFrame();
+      }
       while (!reads_.done() && reads_.peek() <= window.last) addToRings(reads_.next());
       resolveAndWrite(index, window);
     }
@@ -774,6 +777,9 @@ class WindowRun {
         }
       }
       writes_.setDepth(writeDepth);
+      // Each frame's buffers reuse the last's pages (the resolver keeps none with passes, for
+      // its other faces); those a frame leaves idle are freed before the next read, the peak.
+      if (hasPasses()) keptFrameToFrame_.emplace();
       ioDepthSet_ = true;
     }
   }
@@ -923,6 +929,7 @@ class WindowRun {
   std::string passFile_;  // the file the plans came from, for the message when one differs
   bool ioDepthSet_ = false;
   std::shared_ptr<PassBandStream> passBands_;  // where the passes are streamed to the writer
+  std::optional<FrameBuffersKeptFrameToFrame> keptFrameToFrame_;  // with passes
   std::vector<int> inRing_;
   std::map<int, io::FrameData> waiting_;  // read output frames, pixels dropped once uploaded
   bool toldVectorsOnly_ = false;

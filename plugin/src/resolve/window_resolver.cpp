@@ -65,9 +65,11 @@ constexpr int kCryptomatteRanks = 3;  // rank layers a Cryptomatte set's draw wr
 // With image stores a pass draw runs in bands of this many rows, its sums written to images of
 // a band's size and read back after each band: fifteen frame-sized RGBA32F sums (a render's
 // every pass in one draw) take 500 MB at 1080p, 300 MB more than six, on a run whose bar is
-// 4 GiB (docs/PERFORMANCE.md, "Seventh measurement": its peak rose 290 MB); fifteen bands'
-// take 118 MB.
-constexpr int kPassBandRows = 256;
+// 4 GiB (docs/PERFORMANCE.md, "Seventh measurement": its peak rose 290 MB). Bands of 128 rows
+// rather than 256 leave 86 MB more of that bar (the band's images here and its buffer in the
+// writer's stream) to a frame's read buffers kept for the next (docs/PERFORMANCE.md, "Every
+// pass reusing its buffers").
+constexpr int kPassBandRows = 128;
 
 // How window_classify.frag decides which samples are static.
 enum class Classify : int { NoCamera = 0, PreviousCamera = 1, NextFrame = 2, AllStatic = 3 };

@@ -17,8 +17,9 @@ namespace {
 constexpr std::size_t kPooledBufferBytes = std::size_t(1) << 20;
 
 // Enough for the buffers of the frames a pipelined run has in flight at 1080p (about 90 MB
-// a frame in 4 buffers, 3 frames) and at 4K in part; the oldest go first.
-constexpr std::size_t kMaxKeptBuffers = 16;
+// a frame in 4 buffers, 3 frames) and at 4K in part, and for a 1080p frame with every pass
+// (about 20 buffers, 450 MB: FrameBuffersKeptFrameToFrame); the oldest go first.
+constexpr std::size_t kMaxKeptBuffers = 32;
 constexpr std::size_t kMaxKeptBytes = std::size_t(1) << 30;
 
 // Frame buffers are mapped from a huge page's boundary (2 MiB on x86-64), and where the pool
@@ -64,7 +65,10 @@ void unmapFrameBuffer(void* buffer, std::size_t bytes) { munmap(buffer, mappedBy
 struct KeptBuffer {
   void* buffer;
   std::size_t bytes;
+  std::uint64_t givenBack;  // the pool's count of buffers given back when this one was
 };
+
+thread_local int freedAtOnce = 0;  // FrameBuffersFreedAtOnce alive on this thread
 
 class Pool {
  public:
@@ -80,18 +84,22 @@ class Pool {
         kept_.erase(std::next(same).base());
         return buffer;
       }
-      hugePages = notKept_ > 0;  // it will not be kept
+      hugePages = !keeps();  // it will not be kept
     }
     return mapFrameBuffer(bytes, hugePages);
   }
 
   void giveBack(void* buffer, std::size_t bytes) {
+    if (freedAtOnce > 0) {
+      unmapFrameBuffer(buffer, bytes);
+      return;
+    }
     std::deque<KeptBuffer> evicted;
     {
       std::lock_guard<std::mutex> lock(mutex_);
-      kept_.push_back({buffer, bytes});
+      kept_.push_back({buffer, bytes, ++givenBack_});
       keptBytes_ += bytes;
-      const std::size_t maxBytes = notKept_ > 0 ? 0 : kMaxKeptBytes;
+      const std::size_t maxBytes = keeps() ? kMaxKeptBytes : 0;
       while (kept_.size() > kMaxKeptBuffers || keptBytes_ > maxBytes) {
         evicted.push_back(kept_.front());
         keptBytes_ -= kept_.front().bytes;
@@ -116,12 +124,34 @@ class Pool {
     return keptBytes_;
   }
 
-  void keepNone(bool on) {
+  void keepNone(bool on) { count(notKept_, on); }
+  void keepFrameToFrame(bool on) { count(keptFrameToFrame_, on); }
+
+  // Frees the buffers given back up to `mark` (a count of givenBack_) and not taken since;
+  // returns the count now.
+  std::uint64_t releaseGivenBackBefore(std::uint64_t mark) {
+    std::deque<KeptBuffer> idle;
+    std::uint64_t now;
     {
       std::lock_guard<std::mutex> lock(mutex_);
-      notKept_ += on ? 1 : -1;
+      for (auto it = kept_.begin(); it != kept_.end();) {
+        if (it->givenBack <= mark) {
+          idle.push_back(*it);
+          keptBytes_ -= it->bytes;
+          it = kept_.erase(it);
+        } else {
+          ++it;
+        }
+      }
+      now = givenBack_;
     }
-    if (on) release();
+    for (const KeptBuffer& k : idle) unmapFrameBuffer(k.buffer, k.bytes);
+    return now;
+  }
+
+  std::uint64_t givenBack() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return givenBack_;
   }
 
   ~Pool() { release(); }
@@ -130,7 +160,22 @@ class Pool {
   std::mutex mutex_;
   std::deque<KeptBuffer> kept_;  // oldest first
   std::size_t keptBytes_ = 0;
-  int notKept_ = 0;  // FrameBuffersNotKept alive
+  int notKept_ = 0;           // FrameBuffersNotKept alive
+  int keptFrameToFrame_ = 0;  // FrameBuffersKeptFrameToFrame alive
+  std::uint64_t givenBack_ = 0;
+
+  bool keeps() const { return notKept_ == 0 || keptFrameToFrame_ > 0; }
+
+  // One of the policies' guards made or gone; where the pool now keeps none, what it kept goes.
+  void count(int& guards, bool on) {
+    bool releasing;
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      guards += on ? 1 : -1;
+      releasing = !keeps();
+    }
+    if (releasing) release();
+  }
 };
 
 Pool& pool() {
@@ -156,6 +201,15 @@ void giveBackFrameBuffer(void* buffer, std::size_t bytes) {
 void releaseFrameBuffers() { pool().release(); }
 
 std::size_t keptFrameBufferBytes() { return pool().keptBytes(); }
+
+FrameBuffersKeptFrameToFrame::FrameBuffersKeptFrameToFrame() : mark_(pool().givenBack()) {
+  pool().keepFrameToFrame(true);
+}
+FrameBuffersKeptFrameToFrame::~FrameBuffersKeptFrameToFrame() { pool().keepFrameToFrame(false); }
+void FrameBuffersKeptFrameToFrame::nextFrame() { mark_ = pool().releaseGivenBackBefore(mark_); }
+
+FrameBuffersFreedAtOnce::FrameBuffersFreedAtOnce() { ++freedAtOnce; }
+FrameBuffersFreedAtOnce::~FrameBuffersFreedAtOnce() { --freedAtOnce; }
 
 FrameBuffersNotKept::FrameBuffersNotKept() { pool().keepNone(true); }
 FrameBuffersNotKept::~FrameBuffersNotKept() { pool().keepNone(false); }

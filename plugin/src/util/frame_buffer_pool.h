@@ -8,6 +8,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 namespace taa {
@@ -31,6 +32,34 @@ class FrameBuffersNotKept {
   ~FrameBuffersNotKept();
   FrameBuffersNotKept(const FrameBuffersNotKept&) = delete;
   FrameBuffersNotKept& operator=(const FrameBuffersNotKept&) = delete;
+};
+
+// For a run whose peak memory is its bar and whose frames take the same buffers each (a window
+// resolve with every pass in taatool: docs/PERFORMANCE.md, "Every pass reusing its buffers"):
+// while one lives the pool keeps freed buffers even where a FrameBuffersNotKept says none,
+// so each frame's reuse the last's pages instead of faulting new ones in; nextFrame(), called
+// once a frame, frees those kept through a whole frame without being taken (what the frames no
+// longer need, such as the buffers of a window's lead-in frames), so idle buffers stay few.
+class FrameBuffersKeptFrameToFrame {
+ public:
+  FrameBuffersKeptFrameToFrame();
+  ~FrameBuffersKeptFrameToFrame();
+  FrameBuffersKeptFrameToFrame(const FrameBuffersKeptFrameToFrame&) = delete;
+  FrameBuffersKeptFrameToFrame& operator=(const FrameBuffersKeptFrameToFrame&) = delete;
+  void nextFrame();
+
+ private:
+  std::uint64_t mark_;  // the pool's count of buffers given back at the last nextFrame()
+};
+
+// While one lives, the buffers its thread frees are unmapped at once, not kept: for buffers
+// freed to make room at a run's peak (resolve/pass_band_stream's idle bands).
+class FrameBuffersFreedAtOnce {
+ public:
+  FrameBuffersFreedAtOnce();
+  ~FrameBuffersFreedAtOnce();
+  FrameBuffersFreedAtOnce(const FrameBuffersFreedAtOnce&) = delete;
+  FrameBuffersFreedAtOnce& operator=(const FrameBuffersFreedAtOnce&) = delete;
 };
 
 // The pool as a standard allocator, for the vectors that hold frames (util/image.h).
