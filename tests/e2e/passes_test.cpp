@@ -415,10 +415,10 @@ TEST_F(PassesTest, CryptomatteWithMoreIdsThanSlotsKeepsTheHeaviestAndNeverOverco
 }
 
 // The gather writes its pass sums as images where the context has image stores (one draw for
-// every group and the first Cryptomatte set, in bands of 256 rows) and as draw buffers
+// every group and the first Cryptomatte set, in bands of 128 rows) and as draw buffers
 // otherwise (six groups a draw, a draw a Cryptomatte set; TAA_GL_IMAGE_STORES=0 chooses them):
 // the same files bit for bit. Eleven groups and two Cryptomatte sets, so that the draw buffers
-// take two group draws and two Cryptomatte draws; 300 rows, a whole band and part of one. And
+// take two group draws and two Cryptomatte draws; 200 rows, a whole band and part of one. And
 // the groups' rings (resolve/pass_packs) change no bit: side by side in rings of three
 // (TAA_PASS_PACK_GROUPS=3: several rings of each type, some read by both draws of the draw
 // buffers), as the driver takes them, or a ring a group.
@@ -426,7 +426,7 @@ TEST_F(PassesTest, ImageStoresAndDrawBuffersWriteThePassesAlike) {
   constexpr float kIdMaterial = 3.25e-5f;
   constexpr int kTallFrames = 3;
   in_ = dir_ / "tall";
-  test::writeSeparateFrames(in_, 1, kTallFrames, 24, 300);
+  test::writeSeparateFrames(in_, 1, kTallFrames, 24, 200);
   for (int f = 1; f <= kTallFrames; ++f) {
     const fs::path path = in_ / frameName("beauty", f);
     addPasses(path);
@@ -510,9 +510,9 @@ TEST_F(PassesTest, ImageStoresAndDrawBuffersWriteThePassesAlike) {
 // draws (--threads 0), and a write that fails ends the run with its error rather than leaving
 // the GL waiting for it to take the next band.
 TEST_F(PassesTest, PassesStreamedToTheWriterAreTheWholeFramesAndAFailedWriteEndsTheRun) {
-  constexpr int kTallFrames = 3;  // 300 rows: two bands of the pass draws
+  constexpr int kTallFrames = 3;  // 200 rows: two bands of the pass draws
   in_ = dir_ / "tall";
-  test::writeSeparateFrames(in_, 1, kTallFrames, 24, 300);
+  test::writeSeparateFrames(in_, 1, kTallFrames, 24, 200);
   for (int f = 1; f <= kTallFrames; ++f) addPasses(in_ / frameName("beauty", f));
   const ToolRun streamed = run({"-v"}, "streamed");
   const ToolRun whole = run({"-v", "--threads", "0"}, "whole");
