@@ -702,17 +702,16 @@ class WindowRun {
       const int frame = outputs_[std::size_t(index)];
       const FrameWindow window = plan_.windows.at(frame);
       dropFramesBefore(window.first);
-      if (passBands_ && !reads_.done() && reads_.peek() <= window.last) {
+      auto readsDue = [&] { return !reads_.done() && reads_.peek() <= window.last; };
+      if (passBands_ && readsDue()) {
         // A frame with every pass read while the last is still written would pass the 4 GiB
         // bar at 1080p (docs/PERFORMANCE.md, "The passes streamed to the writer"): the write
         // runs beside the pass draws, the read after it.
         writes_.finish();
         passBands_->releaseIdle();
       }
-      if (keptFrameToFrame_ && !reads_.done() && reads_.peek() <= window.last) {
-        keptFrameToFrame_->nextFrame();
-      }
-      while (!reads_.done() && reads_.peek() <= window.last) addToRings(reads_.next());
+      if (keptFrameToFrame_ && readsDue()) keptFrameToFrame_->nextFrame();
+      while (readsDue()) addToRings(reads_.next());
       resolveAndWrite(index, window);
     }
     writes_.finish();
