@@ -15,7 +15,8 @@
 #            written (-v's lines, time-stamped): one run's noise moves a difference of two runs
 #            far more than either; the mean is the one to quote (the intervals vary along the
 #            links, and the median of 13 picked the cheap ones: docs/PERFORMANCE.md, "The ratio
-#            over the whole shot")
+#            over the whole shot"); and the CPU time a frame (user + sys, the difference of the
+#            two runs), which moves less with the machine's load than the wall time
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 taatool="${TAATOOL:-$root/build/bin/taatool}"
@@ -78,12 +79,13 @@ steady() {
   local short long rss
   for range in 17-24 17-32; do
     rm -rf "$work/out-$name"
-    /usr/bin/time -f "%e %M" -o "$work/time-$name-$range" "$taatool" --preset cycles \
+    /usr/bin/time -f "%e %M %U %S" -o "$work/time-$name-$range" "$taatool" --preset cycles \
         "$linked/input.####.exr" --frames "$range" -o "$work/out-$name/r.####.exr" -v "$@" |
       stamp_lines > "$work/lines-$name-$range"
   done
-  read -r short _ < "$work/time-$name-17-24"
-  read -r long rss < "$work/time-$name-17-32"
+  local short_user short_sys long_user long_sys
+  read -r short _ short_user short_sys < "$work/time-$name-17-24"
+  read -r long rss long_user long_sys < "$work/time-$name-17-32"
   local between
   between=$(/usr/bin/python3 - "$work/lines-$name-17-32" <<'PY'
 import statistics, sys
@@ -95,6 +97,7 @@ PY
   echo "$name (steady state): 17-24 ${short} s, 17-32 ${long} s:" \
       "$(/usr/bin/python3 -c "print(round(($long - $short) / 8, 2))") s a frame," \
       "between frames 19-32 ${between}," \
+      "CPU (user + sys) $(/usr/bin/python3 -c "print(round(($long_user + $long_sys - $short_user - $short_sys) / 8, 2))") s a frame," \
       "peak RSS $((rss / 1024)) MiB"
 }
 if [ "${STEADY:-0}" = 1 ]; then
