@@ -16,7 +16,8 @@
 #            far more than either; the mean is the one to quote (the intervals vary along the
 #            links, and the median of 13 picked the cheap ones: docs/PERFORMANCE.md, "The ratio
 #            over the whole shot"); and the CPU time a frame (user + sys, the difference of the
-#            two runs), which moves less with the machine's load than the wall time
+#            two runs); like the wall's difference it misleads for the colour alone, whose
+#            17-24 run fills a ring of 16 frames ahead (docs/PERFORMANCE.md, 2026-12-04)
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 taatool="${TAATOOL:-$root/build/bin/taatool}"
