@@ -508,6 +508,10 @@ void addStaticBlock(ivec2 corner, bool skip, ivec2 taken, float frameWeight) {
                   depthOffset);
 }
 
+// The chain's block's moving sample nearest its point so far: its texel and squared distance
+// (the chain goes on by its motion where the point itself lands off the moving surface).
+ivec2 gNearestMovingTexel;
+float gNearestMovingDistance;
 // One moving sample of the current source, `step` from `corner`, carried along the chain that
 // reached `chained` (without early exits, as addStaticSample); none unless `alive`.
 void addMovingSample(ivec2 corner, ivec2 step, vec2 chained, bool alive) {
@@ -515,6 +519,10 @@ void addMovingSample(ivec2 corner, ivec2 step, vec2 chained, bool alive) {
   RingSample entry = ringSample(clamp(n, ivec2(0), gSize - 1), gSourceLayer);
   vec2 offset = vec2(n) + 0.5 + gSourceJitter - chained;
   float weight = spatialWeight(offset, uSigma);
+  bool nearer = alive && onScreen(n) && entry.depth < 0.0 &&
+                dot(offset, offset) < gNearestMovingDistance;
+  gNearestMovingTexel = nearer ? n : gNearestMovingTexel;
+  gNearestMovingDistance = nearer ? dot(offset, offset) : gNearestMovingDistance;
   // Static samples are the cameras'.
   bool candidate = alive && onScreen(n) && entry.depth < 0.0 && weight >= 1e-3;
   gCandidates += candidate ? 1.0 : 0.0;
@@ -529,6 +537,8 @@ void addMovingSample(ivec2 corner, ivec2 step, vec2 chained, bool alive) {
 // chain is `alive` there.
 void addMovingBlock(vec2 chained, bool alive) {
   ivec2 corner = cornerTexel(chained, gSourceJitter);
+  gNearestMovingDistance = 1.0 / 0.0;
+  gNearestMovingTexel = clamp(corner, ivec2(0), gSize - 1);
   addMovingSample(corner, ivec2(0, 0), chained, alive);
   addMovingSample(corner, ivec2(1, 0), chained, alive);
   addMovingSample(corner, ivec2(0, 1), chained, alive);
@@ -670,12 +680,16 @@ void gatherSource(int k, bool withChains) {
     }
     ivec2 at = ivec2(floor(chained));
     ivec2 atClamped = clamp(at, ivec2(0), gSize - 1);
-    // The chain ends off screen, or where the frame sees something static: the moving surface
-    // is not there (hidden, or gone).
-    bool continues = alive && onScreen(at) &&
-                     ringDepth(texelFetch(uRing, ivec3(atClamped, layer), 0)) < 0.0;
-    addMovingBlock(chained, continues);
-    vec2 atMotion = motionAt(atClamped, layer);
+    // The chain's block is gathered wherever the chain is alive and on screen. It goes on with
+    // the motion of the texel it landed in where that is moving, else with the block's moving
+    // sample nearest its point: at a moving object's edge a pixel's centre may lie off the
+    // object, and its chain, carried by the object's motion, keeps landing on the backdrop
+    // beside the object's samples (docs/TUNING.md, "Chains at edges"). It ends off screen, or
+    // where the block sees nothing moving: the moving surface is not there (hidden, or gone).
+    bool landedMoving = ringDepth(texelFetch(uRing, ivec3(atClamped, layer), 0)) < 0.0;
+    addMovingBlock(chained, alive && onScreen(at));
+    bool continues = alive && onScreen(at) && (landedMoving || !isinf(gNearestMovingDistance));
+    vec2 atMotion = motionAt(landedMoving ? atClamped : gNearestMovingTexel, layer);
     gBehind = behindStep && continues ? chained + atMotion : gBehind;
     gVelocity = !behindStep && continues ? chained - gAheadPrevious : gVelocity;
     gAheadPrevious = !behindStep && continues ? chained : gAheadPrevious;
