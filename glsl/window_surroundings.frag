@@ -6,14 +6,10 @@
 //   samples in the (2R+1)^2 around the pixel (moving samples count as infinitely far). The
 //   square takes t's 3x3 in too, which changes nothing: those depths are no nearer than the
 //   3x3's nearest, and the gather keeps only a nearer one;
-// - G, 1 where a moving sample of t lies within uMovingRadius pixels each way, looked for at
-//   every uMovingStride-th pixel (the stride grows with the picture, so that the radius covers
-//   the same part of it at any size for the same fetches; a moving object narrower than the
-//   stride may be missed): the region test's stricter tolerance applies there (a moving
-//   object's contact shadow moves with it). uMovingRadius is 0 in a frame without moving
-//   samples: nothing to look for.
-// 2 (2R + 1) + 2 (2 uMovingRadius / uMovingStride + 1) fetches a pixel, where the gather read
-// (2R+1)^2 - 9 for R.
+// - G, 1 where a moving sample of t is near (window_near_moving.frag's blocks, read by the
+//   columns pass at the pixel's block; none in a frame without moving samples): the region
+//   test's stricter tolerance applies there (a moving object's contact shadow moves with it).
+// 2 (2R + 1) fetches a pixel, where the gather read (2R+1)^2 - 9 for R.
 
 #include "window_ring.glsl"
 
@@ -22,13 +18,14 @@
 #endif
 
 uniform int uRadius;
-uniform int uMovingRadius;  // G: whether a moving sample lies within this many pixels
-uniform int uMovingStride;  // looking at every this many
 #if FROM_RING
 uniform usampler2DArray uRing;
 uniform int uLayer;
 #else
-uniform sampler2D uRows;  // R: nearest static depth, G: moving within
+uniform sampler2D uRows;  // R: nearest static depth along the row
+uniform bool uAnyMoving;  // t has moving samples: uNearMoving holds where they are near
+uniform sampler2D uNearMoving;
+uniform int uNearMovingStride;  // pixels a block each way
 #endif
 
 layout(location = 0) out vec2 outSurroundings;
@@ -57,16 +54,8 @@ void main() {
     ++d;
   } while (d <= uRadius);
   float moving = 0.0;
-  int steps = uMovingRadius / uMovingStride;
-  int m = -steps;
-  do {
-    ivec2 n = clamp(pixel + m * uMovingStride * step, ivec2(0), size - 1);
-#if FROM_RING
-    moving = max(moving, ringDepth(texelFetch(uRing, ivec3(n, uLayer), 0)) < 0.0 ? 1.0 : 0.0);
-#else
-    moving = max(moving, texelFetch(uRows, n, 0).g);
+#if !FROM_RING
+  moving = uAnyMoving ? texelFetch(uNearMoving, pixel / uNearMovingStride, 0).r : 0.0;
 #endif
-    ++m;
-  } while (m <= steps);
   outSurroundings = vec2(nearest, moving);
 }

@@ -48,12 +48,13 @@ constexpr int kStatsStride = 4;
 constexpr int kTileSize = 32;
 
 // The region test's stricter tolerance (--window-region-near-moving) holds within this many
-// steps of a moving sample of t, a step a pixel at the yardstick's 320x180 and more in a larger
-// picture (nearMovingStride): a contact shadow's reach grows with the picture (docs/TUNING.md,
-// "The region test near moving objects": 8 px kept less of the shadow at 320x180; "Contact
-// shadows at 1080p": at 1080p 16 px gave 18.90 dB inside cycles_contact's shadow, 96 px 23.04).
+// blocks of one holding a moving sample of t, a block a pixel at the yardstick's 320x180 and
+// more in a larger picture (nearMovingStride; window_near_moving.frag): a contact shadow's
+// reach grows with the picture (docs/TUNING.md, "The region test near moving objects": 8 px
+// kept less of the shadow at 320x180; "Contact shadows at 1080p": at 1080p 16 px gave 18.90 dB
+// inside cycles_contact's shadow, 96 px 23.04).
 constexpr int kNearMovingRadius = 16;
-constexpr int kNearMovingReferenceSize = 180;  // the shorter side where a step is a pixel
+constexpr int kNearMovingReferenceSize = 180;  // the shorter side where a block is a pixel
 
 constexpr int kMaxSources = 2 * kMaxWindowRadius;  // window_gather.frag's MAX_SOURCES
 // Pass groups one gather writes besides the colour and diagnostics as draw buffers: 8, GL's
@@ -115,6 +116,12 @@ struct WindowResolver::Impl {
   gl::Program surroundingsRowProgram, surroundingsProgram;
   gl::Texture surroundingRows, surroundings;
   gl::Framebuffer surroundingRowsTarget, surroundingsTarget;
+  // Where a moving sample of t is near, on blocks of nearMovingStride() pixels
+  // (window_near_moving.frag): which blocks have one, then those widened along rows, then
+  // along columns.
+  gl::Program nearMovingBlocksProgram, nearMovingWidenProgram;
+  gl::Texture nearMovingBlocks, nearMovingRows, nearMoving;
+  gl::Framebuffer nearMovingBlocksTarget, nearMovingRowsTarget, nearMovingTarget;
   // The gather's variants, built when first needed (gatherVariant): with and without the chains
   // of moving samples (a window whose frames have no moving sample uses the one without, which
   // llvmpipe runs in half the time), and with and without the static samples' camera carry (a
@@ -239,6 +246,12 @@ struct WindowResolver::Impl {
     surroundingsProgram = gl::Program(gl, gl::embeddedShaderSource("fullscreen.vert"),
                                       gl::embeddedShaderSource("window_surroundings.frag",
                                                                {"#define FROM_RING 0"}));
+    nearMovingBlocksProgram = gl::Program(gl, gl::embeddedShaderSource("fullscreen.vert"),
+                                          gl::embeddedShaderSource("window_near_moving.frag",
+                                                                   {"#define FROM_RING 1"}));
+    nearMovingWidenProgram = gl::Program(gl, gl::embeddedShaderSource("fullscreen.vert"),
+                                         gl::embeddedShaderSource("window_near_moving.frag",
+                                                                  {"#define FROM_RING 0"}));
     for (int variant = 0; variant < kGatherVariants; ++variant) {
       std::vector<std::string> prefix = {
           "#define CHAINS " + std::to_string(variant & 1),
@@ -350,7 +363,7 @@ struct WindowResolver::Impl {
   // A radius of 1 searches t's 3x3 alone, which the gather reads anyway: nothing to find.
   bool thinSearch() const { return options.window.thinSearchRadius > 1; }
   int surroundingsUnit() const { return regionStatsUnit() + 1; }
-  // Pixels a step of the search for moving samples (kNearMovingRadius): the picture's shorter
+  // Pixels a block of the near-moving search takes each way (kNearMovingRadius): the shorter
   // side over 180, at least 1 (6 at 1920x1080).
   int nearMovingStride() const {
     return std::max(1, std::min(width, height) / kNearMovingReferenceSize);
@@ -371,14 +384,11 @@ struct WindowResolver::Impl {
     const Slot& slot = slots.at(frame);
     const bool moving =
         regionTest() && slot.hasMoving && slot.classified != Classify::NoCamera;
-    const int movingStride = nearMovingStride();
-    const int movingRadius = moving ? kNearMovingRadius * movingStride : 0;
+    if (moving) writeNearMoving(slot.layer);
     const gl::Program& rows = surroundingsRowProgram;
     rows.set("uRing", int(kRingUnit));
     rows.set("uLayer", slot.layer);
     rows.set("uRadius", thinRadius);
-    rows.set("uMovingRadius", movingRadius);
-    rows.set("uMovingStride", movingStride);
     surroundingRowsTarget.bind();
     rows.use();
     ring.bind(kRingUnit);
@@ -386,12 +396,50 @@ struct WindowResolver::Impl {
     const gl::Program& columns = surroundingsProgram;
     columns.set("uRows", 0);
     columns.set("uRadius", thinRadius);
-    columns.set("uMovingRadius", movingRadius);
-    columns.set("uMovingStride", movingStride);
+    columns.set("uAnyMoving", moving ? 1 : 0);
+    columns.set("uNearMoving", 1);
+    columns.set("uNearMovingStride", nearMovingStride());
     surroundingsTarget.bind();
     columns.use();
     surroundingRows.bind(0);
+    if (moving) nearMoving.bind(1);
     triangle.draw("window surroundings pass (columns)");
+  }
+
+  // window_near_moving.frag: the blocks within kNearMovingRadius blocks of one where a sample
+  // of ring layer `layer` moves.
+  void writeNearMoving(int layer) {
+    const int stride = nearMovingStride();
+    const int blocksWide = (width + stride - 1) / stride;
+    const int blocksHigh = (height + stride - 1) / stride;
+    if (!nearMoving.id()) {
+      nearMovingBlocks = gl::Texture(gl, blocksWide, blocksHigh, GL_R32F);
+      nearMovingRows = gl::Texture(gl, blocksWide, blocksHigh, GL_R32F);
+      nearMoving = gl::Texture(gl, blocksWide, blocksHigh, GL_R32F);
+      nearMovingBlocksTarget = gl::Framebuffer(gl, nearMovingBlocks);
+      nearMovingRowsTarget = gl::Framebuffer(gl, nearMovingRows);
+      nearMovingTarget = gl::Framebuffer(gl, nearMoving);
+    }
+    const gl::Program& blocks = nearMovingBlocksProgram;
+    blocks.set("uRing", int(kRingUnit));
+    blocks.set("uLayer", layer);
+    blocks.set("uStride", stride);
+    nearMovingBlocksTarget.bind();
+    blocks.use();
+    ring.bind(kRingUnit);
+    triangle.draw("window near-moving blocks");
+    const gl::Program& widen = nearMovingWidenProgram;
+    widen.set("uBlocks", 0);
+    widen.set("uReach", kNearMovingRadius);
+    widen.use();
+    widen.set("uAlongColumns", 0);
+    nearMovingRowsTarget.bind();
+    nearMovingBlocks.bind(0);
+    triangle.draw("window near-moving widening (rows)");
+    widen.set("uAlongColumns", 1);
+    nearMovingTarget.bind();
+    nearMovingRows.bind(0);
+    triangle.draw("window near-moving widening (columns)");
   }
 
   void allocateRegionStats() {
@@ -517,6 +565,12 @@ struct WindowResolver::Impl {
     surroundings = gl::Texture();
     surroundingRowsTarget = gl::Framebuffer();
     surroundingsTarget = gl::Framebuffer();
+    nearMovingBlocks = gl::Texture();
+    nearMovingRows = gl::Texture();
+    nearMoving = gl::Texture();
+    nearMovingBlocksTarget = gl::Framebuffer();
+    nearMovingRowsTarget = gl::Framebuffer();
+    nearMovingTarget = gl::Framebuffer();
     ones.clear();
     zeros.clear();
     slots.clear();
