@@ -1,7 +1,8 @@
 #version 410 core
 // Window resolve, what the gather needs from around each pixel of frame t, as two passes of a
 // separable reduction: along rows from the ring's layer (FROM_RING 1), then along columns of
-// that (FROM_RING 0). Into an RG32F texture the gather reads once a pixel:
+// that (FROM_RING 0: the rows' pass has only R to give, into an R32F texture). Into an RG32F
+// texture the gather reads once a pixel:
 // - R, the thin search's input (--window-thin-search R): the nearest static depth of t's
 //   samples in the (2R+1)^2 around the pixel (moving samples count as infinitely far). The
 //   square takes t's 3x3 in too, which changes nothing: those depths are no nearer than the

@@ -373,7 +373,7 @@ struct WindowResolver::Impl {
   // the thin search's depth, and nearness to a moving sample for the region test.
   void writeSurroundings(int frame) {
     if (!surroundings.id()) {
-      surroundingRows = gl::Texture(gl, width, height, GL_RG32F);
+      surroundingRows = gl::Texture(gl, width, height, GL_R32F);  // the rows' nearest depth
       surroundings = gl::Texture(gl, width, height, GL_RG32F);
       surroundingRowsTarget = gl::Framebuffer(gl, surroundingRows);
       surroundingsTarget = gl::Framebuffer(gl, surroundings);
