@@ -23,7 +23,7 @@ std::string expandFramePattern(const std::string& pattern, int frame);
 // duplicates removed. Negative frames are written with their sign: "-5--1", "-2-3". A range
 // whose end is below its start runs backwards ("5-1x2" = 5, 3, 1). Spaces around items are
 // ignored. Throws taa::Error quoting the text for malformed text, an empty list, a step below 1
-// or a range of more than 10 million frames.
+// or a list of more than a million frames.
 std::vector<int> parseFrameRange(const std::string& text);
 
 }  // namespace taa::io
